@@ -1,0 +1,268 @@
+// Copyright (c) 2026 The CGAL RRHT authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// RRHT_Cubes and RRHT_Unif (paper, Section 5): points drawn spatially
+// uniformly in the neighborhood ball B_P rather than uniformly among the
+// points, so that a densely sampled patch does not outvote a sparse one.
+
+#ifndef CGAL_RRHT_BALL_SAMPLING_H
+#define CGAL_RRHT_BALL_SAMPLING_H
+
+#include <CGAL/RRHT/Points_sampling.h>
+#include <CGAL/RRHT/Random.h>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <initializer_list>
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace RRHT {
+
+/// Draws three distinct points with `sampler.draw_point(rng)`, redrawing a
+/// point equal to one already drawn. After 64 failed draws of one point (a
+/// neighborhood whose spatial distribution hides all but one or two of its
+/// points), that point is drawn uniformly among the others instead.
+template <typename Sampler>
+void draw_distinct_triple(Sampler& sampler, std::uint32_t n, Random& rng, Triple& t)
+{
+  for(int i = 0; i < 3; ++i)
+  {
+    int attempts = 0;
+    for(;;)
+    {
+      std::uint32_t p = (attempts < 64) ? sampler.draw_point(rng) : rng.uniform_index(n);
+      ++attempts;
+      if((i > 0 && p == t[0]) || (i > 1 && p == t[1]))
+        continue;
+      t[i] = p;
+      break;
+    }
+  }
+}
+
+/// The points of a neighborhood bucketed in a regular grid of
+/// `cells_per_axis`^3 cells covering [-radius, radius]^3 (a counting sort:
+/// the points of cell c are `point(i)` for i in `points_in(c)`).
+class Grid_of_neighborhood
+{
+public:
+  void build(const std::vector<Eigen::Vector3d>& points, double radius, std::uint32_t cells_per_axis)
+  {
+    m_cells_per_axis = cells_per_axis;
+    m_cell_size = 2 * radius / cells_per_axis;
+    m_radius = radius;
+    const std::size_t cells = std::size_t(cells_per_axis) * cells_per_axis * cells_per_axis;
+    m_first.assign(cells + 1, 0);
+    m_cell_of_point.resize(points.size());
+    for(std::size_t i = 0; i < points.size(); ++i)
+    {
+      m_cell_of_point[i] = cell(points[i]);
+      ++m_first[m_cell_of_point[i] + 1];
+    }
+    for(std::size_t c = 0; c < cells; ++c)
+      m_first[c + 1] += m_first[c];
+    m_sorted.resize(points.size());
+    m_fill.assign(m_first.begin(), m_first.end() - 1);
+    for(std::uint32_t i = 0; i < points.size(); ++i)
+      m_sorted[m_fill[m_cell_of_point[i]]++] = i;
+  }
+
+  /// Coordinate of the cell holding `x` along one axis (clamped to the grid).
+  std::uint32_t coordinate(double x) const
+  {
+    const double c = std::floor((x + m_radius) / m_cell_size);
+    return static_cast<std::uint32_t>((std::min)((std::max)(c, 0.), double(m_cells_per_axis - 1)));
+  }
+
+  std::size_t cell(std::uint32_t i, std::uint32_t j, std::uint32_t k) const
+  {
+    return (std::size_t(i) * m_cells_per_axis + j) * m_cells_per_axis + k;
+  }
+
+  std::size_t cell(const Eigen::Vector3d& p) const
+  {
+    return cell(coordinate(p.x()), coordinate(p.y()), coordinate(p.z()));
+  }
+
+  std::size_t number_of_cells() const { return m_first.size() - 1; }
+
+  /// Positions, in the order of the sort, of the points of cell `c`.
+  std::pair<std::uint32_t, std::uint32_t> points_in(std::size_t c) const
+  {
+    return std::make_pair(m_first[c], m_first[c + 1]);
+  }
+
+  /// The index in the neighborhood of the point at position `i` of the sort.
+  std::uint32_t point(std::uint32_t i) const { return m_sorted[i]; }
+
+private:
+  std::uint32_t m_cells_per_axis = 1;
+  double m_cell_size = 1, m_radius = 1;
+  std::vector<std::uint32_t> m_first, m_fill, m_sorted;
+  std::vector<std::size_t> m_cell_of_point;
+};
+
+/// Weights of the c^3 small cubes that cover the ball (paper, Fig. 5): the
+/// fraction of each cube's volume inside the ball. They depend on c only
+/// (the ball is scaled to the unit ball) and are computed once, by the
+/// midpoint rule on m^3 sub-cubes per cube (m = max(8, 128 / c), i.e. 32^3
+/// for c = 4). A cube that meets the ball always keeps a positive weight, so
+/// that every point of the neighborhood can be drawn.
+class Cube_weights
+{
+public:
+  explicit Cube_weights(unsigned int c) : m_c(c), m_weights(std::size_t(c) * c * c, 0.)
+  {
+    const unsigned int m = (std::max)(8u, 128u / c);
+    const double side = 2. / c, sub = side / m;
+    for(unsigned int i = 0; i < c; ++i)
+      for(unsigned int j = 0; j < c; ++j)
+        for(unsigned int k = 0; k < c; ++k)
+        {
+          const double lo[3] = { -1 + i * side, -1 + j * side, -1 + k * side };
+          // Squared distance from the center of the ball to the cube.
+          double nearest = 0;
+          for(int d = 0; d < 3; ++d)
+          {
+            const double gap = (std::max)({ lo[d], -(lo[d] + side), 0. });
+            nearest += gap * gap;
+          }
+          if(nearest >= 1)
+            continue;
+          std::size_t inside = 0;
+          for(unsigned int a = 0; a < m; ++a)
+            for(unsigned int b = 0; b < m; ++b)
+              for(unsigned int e = 0; e < m; ++e)
+              {
+                const double x = lo[0] + (a + 0.5) * sub, y = lo[1] + (b + 0.5) * sub, z = lo[2] + (e + 0.5) * sub;
+                inside += (x * x + y * y + z * z <= 1);
+              }
+          m_weights[(std::size_t(i) * c + j) * c + k] = (std::max)(double(inside), 0.5) / (double(m) * m * m);
+        }
+  }
+
+  unsigned int cubes_per_axis() const { return m_c; }
+  double weight(std::uint64_t cube) const { return m_weights[cube]; }
+
+private:
+  unsigned int m_c;
+  std::vector<double> m_weights;
+};
+
+/// RRHT_Cubes: pick one of the c^3 small cubes covering the ball with a
+/// probability proportional to its weight, among those holding points (an
+/// empty cube is picked again, which is the same as leaving it out), then a
+/// point of that cube uniformly.
+class Cubes_sampler
+{
+public:
+  explicit Cubes_sampler(const Cube_weights& weights) : m_weights(&weights) {}
+
+  void prepare(const std::vector<Eigen::Vector3d>& points, double radius)
+  {
+    m_grid.build(points, radius, m_weights->cubes_per_axis());
+    m_cubes.clear();
+    m_cumulated.clear();
+    double total = 0;
+    for(std::size_t c = 0; c < m_grid.number_of_cells(); ++c)
+      if(m_grid.points_in(c).first != m_grid.points_in(c).second)
+      {
+        total += m_weights->weight(c);
+        m_cubes.push_back(c);
+        m_cumulated.push_back(total);
+      }
+  }
+
+  std::uint32_t draw_point(Random& rng)
+  {
+    const double u = rng.uniform_real() * m_cumulated.back();
+    std::size_t i = std::upper_bound(m_cumulated.begin(), m_cumulated.end(), u) - m_cumulated.begin();
+    if(i == m_cumulated.size()) // u rounded up to the total
+      --i;
+    const auto range = m_grid.points_in(m_cubes[i]);
+    return m_grid.point(range.first + rng.uniform_index(range.second - range.first));
+  }
+
+private:
+  const Cube_weights* m_weights;
+  Grid_of_neighborhood m_grid;
+  std::vector<std::size_t> m_cubes;  // the cubes that hold points
+  std::vector<double> m_cumulated;   // their cumulated weights
+};
+
+/// RRHT_Unif: pick a small ball B of radius r/c centered uniformly in the
+/// neighborhood ball B_P, redraw it while it holds no point, then pick a
+/// point of B uniformly. The points of B are found in a grid of cell size
+/// r/c over the neighborhood, so only the 27 cells around B's center are
+/// looked at. B_P contains the ball of radius r/c around P itself, so a draw
+/// succeeds with probability at least 1/c^3; after 100 000 empty draws (which
+/// can only happen when the radius is far below the point spacing) a point is
+/// drawn uniformly instead.
+class Unif_sampler
+{
+public:
+  explicit Unif_sampler(unsigned int presampling_factor) : m_c(presampling_factor) {}
+
+  void prepare(const std::vector<Eigen::Vector3d>& points, double radius)
+  {
+    m_points = &points;
+    m_radius = radius;
+    m_small_radius = radius / m_c;
+    m_grid.build(points, radius, 2 * m_c);
+  }
+
+  std::uint32_t draw_point(Random& rng)
+  {
+    const double r2 = m_small_radius * m_small_radius;
+    for(int attempt = 0; attempt < 100000; ++attempt)
+    {
+      // Center of B, uniform in B_P (rejection from the enclosing cube).
+      Eigen::Vector3d center;
+      do
+        center = Eigen::Vector3d(2 * rng.uniform_real() - 1, 2 * rng.uniform_real() - 1, 2 * rng.uniform_real() - 1);
+      while(center.squaredNorm() > 1);
+      center *= m_radius;
+
+      m_candidates.clear();
+      std::uint32_t lo[3], hi[3];
+      for(int d = 0; d < 3; ++d)
+      {
+        lo[d] = m_grid.coordinate(center[d] - m_small_radius);
+        hi[d] = m_grid.coordinate(center[d] + m_small_radius);
+      }
+      for(std::uint32_t i = lo[0]; i <= hi[0]; ++i)
+        for(std::uint32_t j = lo[1]; j <= hi[1]; ++j)
+          for(std::uint32_t k = lo[2]; k <= hi[2]; ++k)
+          {
+            const auto range = m_grid.points_in(m_grid.cell(i, j, k));
+            for(std::uint32_t e = range.first; e < range.second; ++e)
+            {
+              const std::uint32_t p = m_grid.point(e);
+              if(((*m_points)[p] - center).squaredNorm() <= r2)
+                m_candidates.push_back(p);
+            }
+          }
+      if(!m_candidates.empty())
+        return m_candidates[rng.uniform_index(std::uint32_t(m_candidates.size()))];
+    }
+    return rng.uniform_index(std::uint32_t(m_points->size()));
+  }
+
+private:
+  unsigned int m_c;
+  const std::vector<Eigen::Vector3d>* m_points = nullptr;
+  double m_radius = 1, m_small_radius = 1;
+  Grid_of_neighborhood m_grid;
+  std::vector<std::uint32_t> m_candidates;
+};
+
+} // namespace RRHT
+} // namespace CGAL
+
+#endif // CGAL_RRHT_BALL_SAMPLING_H

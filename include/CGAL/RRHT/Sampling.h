@@ -1,0 +1,28 @@
+// Copyright (c) 2026 The CGAL RRHT authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The three ways of drawing the triples of points that define plane
+// hypotheses (paper, Section 5).
+
+#ifndef CGAL_RRHT_SAMPLING_H
+#define CGAL_RRHT_SAMPLING_H
+
+#include <CGAL/RRHT/Points_sampling.h>
+#include <CGAL/RRHT/Ball_sampling.h>
+
+namespace CGAL {
+namespace RRHT {
+
+/// \ingroup PkgRRHTRef
+/// How the three points of a plane hypothesis are drawn in a neighborhood.
+enum class Sampling
+{
+  POINTS, ///< RRHT_Points: uniformly among the neighbors, never the same triple twice (`Points_sampler`).
+  CUBES,  ///< RRHT_Cubes: a small cube of the ball, weighted by its volume in the ball, then a point in it (`Cubes_sampler`).
+  UNIF    ///< RRHT_Unif: a small ball of radius r/c in the neighborhood ball, redrawn while empty, then a point in it (`Unif_sampler`).
+};
+
+} // namespace RRHT
+} // namespace CGAL
+
+#endif // CGAL_RRHT_SAMPLING_H

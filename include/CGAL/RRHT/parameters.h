@@ -1,0 +1,162 @@
+// Copyright (c) 2026 The CGAL RRHT authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Named parameters of `CGAL::rrht_estimate_normals()`.
+
+#ifndef CGAL_RRHT_PARAMETERS_H
+#define CGAL_RRHT_PARAMETERS_H
+
+#include <CGAL/Named_function_parameters.h>
+
+#include <type_traits>
+
+namespace CGAL {
+namespace RRHT {
+
+/// \cond SKIP_IN_MANUAL
+namespace internal_np {
+// One tag type per RRHT parameter. They live outside `CGAL::internal_np`, which
+// a package outside CGAL cannot extend, but `CGAL::parameters::get_parameter()`
+// finds them in a chain like any CGAL tag.
+#define CGAL_RRHT_NAMED_PARAMETERS(X)                          \
+  X(number_of_planes_t, number_of_planes)                      \
+  X(accumulator_slices_t, accumulator_slices)                  \
+  X(number_of_rotations_t, number_of_rotations)                \
+  X(use_confidence_interval_t, use_confidence_interval)        \
+  X(sampling_t, sampling)                                      \
+  X(presampling_factor_t, presampling_factor)                  \
+  X(aggregation_t, aggregation)                                \
+  X(cluster_angle_t, cluster_angle)
+
+#define CGAL_RRHT_DECLARE_TAG(TAG, NAME) enum TAG { NAME };
+CGAL_RRHT_NAMED_PARAMETERS(CGAL_RRHT_DECLARE_TAG)
+#undef CGAL_RRHT_DECLARE_TAG
+} // namespace internal_np
+/// \endcond
+
+/// A chain of named parameters that accepts both the named parameters of
+/// \cgal (`point_map`, `normal_map`, `neighbor_radius`, ...) and those of
+/// RRHT (`number_of_planes`, `sampling`, ...), in any order.
+///
+/// It *is* a `CGAL::Named_function_parameters`: every function of \cgal that
+/// takes named parameters reads it unchanged, and ignores the RRHT entries.
+/// Only the member functions differ, each returning this type again so that
+/// the chain goes on. A chain is started from `CGAL::RRHT::parameters`.
+template <typename T, typename Tag, typename Base = CGAL::internal_np::No_property>
+struct Named_function_parameters
+  : CGAL::Named_function_parameters<T, Tag, Base>
+{
+  typedef CGAL::Named_function_parameters<T, Tag, Base> Cgal_parameters;
+  typedef Named_function_parameters<T, Tag, Base> self;
+
+  Named_function_parameters() : Cgal_parameters() {}
+  Named_function_parameters(const T& v) : Cgal_parameters(v) {}
+  Named_function_parameters(const T& v, const Base& b) : Cgal_parameters(v, b) {}
+
+  // CGAL's parameters, generated from CGAL's own list so that none is missing.
+#define CGAL_add_named_parameter(X, Y, Z)                                       \
+  template <typename K>                                                         \
+  Named_function_parameters<K, CGAL::internal_np::X, self> Z(const K& k) const  \
+  {                                                                             \
+    return Named_function_parameters<K, CGAL::internal_np::X, self>(k, *this);  \
+  }
+#include <CGAL/STL_Extension/internal/parameters_interface.h>
+#undef CGAL_add_named_parameter
+
+  // RRHT's parameters.
+#define CGAL_RRHT_MEMBER(TAG, NAME)                                             \
+  template <typename K>                                                         \
+  Named_function_parameters<K, internal_np::TAG, self> NAME(const K& k) const   \
+  {                                                                             \
+    return Named_function_parameters<K, internal_np::TAG, self>(k, *this);      \
+  }
+  CGAL_RRHT_NAMED_PARAMETERS(CGAL_RRHT_MEMBER)
+#undef CGAL_RRHT_MEMBER
+};
+
+/// The starting points of RRHT named-parameter chains: every function of
+/// `CGAL::parameters`, and one per RRHT parameter. For example
+/// \code
+/// namespace params = CGAL::RRHT::parameters;
+/// params::point_map(pm).normal_map(nm).number_of_planes(300).sampling(CGAL::RRHT::Sampling::CUBES)
+/// params::sampling(CGAL::RRHT::Sampling::CUBES).neighbor_radius(0.1).normal_map(nm)
+/// params::extend(np).number_of_rotations(2)   // np: any CGAL named-parameter chain
+/// \endcode
+namespace parameters {
+
+typedef RRHT::Named_function_parameters<bool, CGAL::internal_np::all_default_t> Default_named_parameters;
+
+/// An empty chain, to be continued with any parameter.
+inline Default_named_parameters default_values() { return Default_named_parameters(); }
+
+#define CGAL_add_named_parameter(X, Y, Z)                                       \
+  template <typename K>                                                         \
+  RRHT::Named_function_parameters<K, CGAL::internal_np::X> Z(const K& p)        \
+  {                                                                             \
+    return RRHT::Named_function_parameters<K, CGAL::internal_np::X>(p);         \
+  }
+#include <CGAL/STL_Extension/internal/parameters_interface.h>
+#undef CGAL_add_named_parameter
+
+#define CGAL_RRHT_FREE_FUNCTION(TAG, NAME)                                      \
+  template <typename K>                                                         \
+  RRHT::Named_function_parameters<K, RRHT::internal_np::TAG> NAME(const K& p)   \
+  {                                                                             \
+    return RRHT::Named_function_parameters<K, RRHT::internal_np::TAG>(p);       \
+  }
+CGAL_RRHT_NAMED_PARAMETERS(CGAL_RRHT_FREE_FUNCTION)
+#undef CGAL_RRHT_FREE_FUNCTION
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+// Rebuilds a chain, link by link, as an RRHT chain holding the same values.
+template <typename Chain> struct Extended;
+
+template <> struct Extended<CGAL::internal_np::No_property>
+{
+  typedef CGAL::internal_np::No_property type;
+};
+
+template <typename T, typename Tag, typename Base>
+struct Extended<CGAL::Named_function_parameters<T, Tag, Base> >
+{
+  typedef Extended<Base> Tail;
+  typedef RRHT::Named_function_parameters<T, Tag, typename Tail::type> type;
+
+  static type make(const CGAL::Named_function_parameters<T, Tag, Base>& link)
+  {
+    return make(link, std::is_same<Base, CGAL::internal_np::No_property>());
+  }
+  static type make(const CGAL::Named_function_parameters<T, Tag, Base>& link, std::true_type /*last link*/)
+  {
+    return type(CGAL::internal_np::get_reference(link.v));
+  }
+  static type make(const CGAL::Named_function_parameters<T, Tag, Base>& link, std::false_type)
+  {
+    return type(CGAL::internal_np::get_reference(link.v), Tail::make(static_cast<const Base&>(link)));
+  }
+};
+
+// An RRHT link is rebuilt like the CGAL link it derives from.
+template <typename T, typename Tag, typename Base>
+struct Extended<RRHT::Named_function_parameters<T, Tag, Base> >
+  : Extended<CGAL::Named_function_parameters<T, Tag, Base> >
+{};
+} // namespace internal
+/// \endcond
+
+/// Continues an existing chain of \cgal named parameters with RRHT ones, e.g.
+/// `CGAL::RRHT::parameters::extend(np).number_of_planes(300)` in a function
+/// that received `np` from its caller.
+template <typename T, typename Tag, typename Base>
+typename internal::Extended<CGAL::Named_function_parameters<T, Tag, Base> >::type
+extend(const CGAL::Named_function_parameters<T, Tag, Base>& np)
+{
+  return internal::Extended<CGAL::Named_function_parameters<T, Tag, Base> >::make(np);
+}
+
+} // namespace parameters
+} // namespace RRHT
+} // namespace CGAL
+
+#endif // CGAL_RRHT_PARAMETERS_H

@@ -1,0 +1,499 @@
+// Copyright (c) 2026 The CGAL RRHT authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Normal estimation with the Robust Randomized Hough Transform of
+// A. Boulch and R. Marlet, "Fast and Robust Normal Estimation for Point
+// Clouds with Sharp Features", Computer Graphics Forum 31(5), 2012.
+
+#ifndef CGAL_RRHT_ESTIMATE_NORMALS_H
+#define CGAL_RRHT_ESTIMATE_NORMALS_H
+
+#include <CGAL/RRHT/parameters.h>
+#include <CGAL/RRHT/Neighbor_search.h>
+#include <CGAL/RRHT/Accumulator.h>
+#include <CGAL/RRHT/stopping_rules.h>
+#include <CGAL/RRHT/Sampling.h>
+#include <CGAL/RRHT/aggregation.h>
+#include <CGAL/RRHT/Random.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/property_map.h>
+#include <CGAL/tags.h>
+
+#include <Eigen/Core>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#endif
+
+#include <atomic>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <iterator>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace RRHT {
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+/// The parameters of the algorithm (paper, Section 6), once checked.
+struct Settings
+{
+  unsigned int k;                 // K, or the cap on a ball
+  double neighbor_radius;         // r, or 0 for k-neighborhoods
+  std::size_t number_of_planes;   // T_R
+  bool use_confidence_interval;   // eq. 10
+  Sampling sampling;              // Points, Cubes or Unif
+  unsigned int presampling_factor;// c
+  unsigned int number_of_rotations; // n_rot
+  Aggregation aggregation;        // m, b or c
+  double cos_cluster_angle;       // cos(a_cluster)
+  std::uint64_t seed;
+};
+
+/// The working memory of one thread, reused from point to point.
+struct Scratch
+{
+  Scratch(const Bin_layout& layout, const Cube_weights& cube_weights, unsigned int presampling_factor)
+    : accumulator(layout), cubes(cube_weights), unif(presampling_factor)
+  {}
+
+  Neighbor_search::Scratch search;
+  Neighborhood neighborhood;
+  std::vector<Eigen::Vector3d> rotated;
+  Accumulator accumulator;
+  Points_sampler points;
+  Cubes_sampler cubes;
+  Unif_sampler unif;
+  std::vector<Candidate_normal> candidates;
+};
+
+/// One run of the Robust Randomized Hough Transform (Section 3): draws planes
+/// through triples of `points` until T_R triples have been drawn (eq. 7) or
+/// the confidence intervals of the two most voted bins separate (eq. 10), and
+/// returns the mean normal of the most voted bin (Section 4). Triples of
+/// (nearly) collinear or repeated points define no plane and cast no vote;
+/// the paper does not check near-collinearity (Section 2), we only leave out
+/// triples whose two edges make an angle below 1e-10 radians, which would
+/// give no direction at all.
+template <typename DrawTriple>
+Candidate_normal hough_transform(const std::vector<Eigen::Vector3d>& points, Accumulator& accumulator,
+                                 const Settings& settings, DrawTriple draw_triple)
+{
+  accumulator.clear();
+  Triple t;
+  for(std::size_t drawn = 0; drawn < settings.number_of_planes; ++drawn)
+  {
+    if(!draw_triple(t))
+      break; // every triple of the neighborhood has voted
+    const Eigen::Vector3d u = points[t[1]] - points[t[0]];
+    const Eigen::Vector3d v = points[t[2]] - points[t[0]];
+    const Eigen::Vector3d n = u.cross(v);
+    if(!(n.squaredNorm() > 1e-20 * u.squaredNorm() * v.squaredNorm()))
+      continue;
+    accumulator.vote(n);
+    if(settings.use_confidence_interval &&
+       confidence_intervals_are_disjoint(accumulator.votes_of_most_voted_bin(),
+                                         accumulator.votes_of_second_most_voted_bin(),
+                                         accumulator.number_of_votes()))
+      break;
+  }
+  return Candidate_normal{ accumulator.normal_of_most_voted_bin(), accumulator.votes_of_most_voted_bin() };
+}
+
+/// The normal at point `index` (Section 2): draws plane hypotheses in its
+/// neighborhood with n_rot randomly rotated accumulators and combines their
+/// winners. Returns the zero vector when no plane can be formed.
+inline Eigen::Vector3d estimate_normal(std::size_t index, const Neighbor_search& search,
+                                       const Settings& settings, Scratch& scratch)
+{
+  Neighborhood& neighborhood = scratch.neighborhood;
+  search.find(index, settings.k, settings.neighbor_radius, neighborhood, scratch.search);
+  const std::vector<Eigen::Vector3d>& points = neighborhood.points;
+  if(points.size() < 3 || !(neighborhood.radius > 0))
+    return Eigen::Vector3d::Zero(); // fewer than 3 distinct points
+  const std::uint32_t n = static_cast<std::uint32_t>(points.size());
+
+  // One random stream per point: the same normals whatever the threads.
+  Random rng(settings.seed, index);
+
+  switch(settings.sampling)
+  {
+  case Sampling::POINTS: scratch.points.prepare(n, settings.number_of_planes); break;
+  case Sampling::CUBES: scratch.cubes.prepare(points, neighborhood.radius); break;
+  case Sampling::UNIF: scratch.unif.prepare(points, neighborhood.radius); break;
+  }
+  auto draw_triple = [&](Triple& t) -> bool {
+    switch(settings.sampling)
+    {
+    case Sampling::POINTS: return scratch.points.draw(rng, t);
+    case Sampling::CUBES: draw_distinct_triple(scratch.cubes, n, rng, t); return true;
+    case Sampling::UNIF: default: draw_distinct_triple(scratch.unif, n, rng, t); return true;
+    }
+  };
+
+  // Randomly rotated accumulators (Section 4), by rotating the points.
+  scratch.candidates.clear();
+  scratch.rotated.resize(n);
+  for(unsigned int r = 0; r < settings.number_of_rotations; ++r)
+  {
+    const Eigen::Matrix3d rotation = rng.uniform_rotation();
+    for(std::uint32_t i = 0; i < n; ++i)
+      scratch.rotated[i] = rotation * points[i];
+    if(settings.sampling == Sampling::POINTS)
+      scratch.points.start_run();
+    Candidate_normal candidate = hough_transform(scratch.rotated, scratch.accumulator, settings, draw_triple);
+    candidate.normal = rotation.transpose() * candidate.normal; // back to the frame of the cloud
+    scratch.candidates.push_back(candidate);
+  }
+  return aggregate(scratch.candidates, settings.aggregation, settings.cos_cluster_angle);
+}
+
+/// Progress report and interruption through the user's callback, called
+/// after every block of points: directly in a sequential run; in a parallel
+/// run by the thread that finishes a block, one thread at a time (a thread
+/// that finds the callback busy does not wait for it).
+class Progress
+{
+public:
+  Progress(const std::function<bool(double)>& callback, std::size_t total)
+    : m_callback(callback), m_total(total), m_done(0), m_busy(false), m_interrupted(false)
+  {}
+
+  bool interrupted() const { return m_interrupted.load(std::memory_order_relaxed); }
+
+  void add(std::size_t done)
+  {
+    const std::size_t now = m_done.fetch_add(done) + done;
+    if(!m_callback || m_busy.exchange(true))
+      return;
+    if(!m_callback(double(now) / double(m_total)))
+      m_interrupted = true;
+    m_busy = false;
+  }
+
+  void finish()
+  {
+    if(m_callback && !interrupted())
+      m_callback(1.);
+  }
+
+private:
+  const std::function<bool(double)>& m_callback;
+  std::size_t m_total;
+  std::atomic<std::size_t> m_done;
+  std::atomic<bool> m_busy;
+  std::atomic<bool> m_interrupted;
+};
+
+inline void check(bool condition, const std::string& message)
+{
+  if(!condition)
+    throw std::invalid_argument("CGAL::rrht_estimate_normals(): " + message);
+}
+
+/// A count given as any arithmetic type, checked to lie in [low, high]
+/// before it is converted (so that -1 is not taken for a huge unsigned).
+/// The bounds are far below 2^53, so the comparison in double is exact.
+template <typename Count, typename T>
+Count count_in_range(const T& value, std::uint64_t low, std::uint64_t high, const std::string& what)
+{
+  static_assert(std::is_arithmetic<T>::value, "a count must be given as a number");
+  const double as_double = static_cast<double>(value);
+  check(as_double >= double(low) && as_double <= double(high), // false for NaN
+        what + " must be from " + std::to_string(low) + " to " + std::to_string(high));
+  return static_cast<Count>(value);
+}
+
+} // namespace internal
+/// \endcond
+} // namespace RRHT
+
+/**
+   \ingroup PkgRRHTRef
+
+   Estimates normal directions of the range of `points` with the Robust
+   Randomized Hough Transform (RRHT) of Boulch and Marlet (2012), which keeps
+   sharp features: the normal at a point is the most probable normal of the
+   planes through random triples of its neighbors, found with a Hough
+   accumulator.
+
+   For each point, planes through triples of its neighbors vote in an
+   accumulator of directions (`accumulator_slices`) until `number_of_planes`
+   triples were drawn or, with `use_confidence_interval`, until the most voted
+   bin is confidently ahead of the second one. The normal is the mean of the
+   normals of the most voted bin. This is done with `number_of_rotations`
+   randomly rotated accumulators, whose normals are combined by
+   `aggregation`. Triples are drawn according to `sampling`: uniformly among
+   the neighbors, or spatially uniformly in the neighborhood ball to resist
+   density variations.
+
+   The output normals are unit vectors, randomly oriented (use
+   `CGAL::mst_orient_normals()` to orient them). Where no plane can be formed
+   (fewer than 3 distinct points in the neighborhood, all of them collinear,
+   or a point with a non-finite coordinate), the normal is the null vector
+   `CGAL::NULL_VECTOR`. Points with a non-finite coordinate are not
+   neighbors of any point.
+
+   The result depends only on the input, the parameters and `random_seed`:
+   it is the same, bit for bit, with `Sequential_tag` and `Parallel_tag` and
+   any number of threads.
+
+   \tparam ConcurrencyTag enables sequential versus parallel algorithm. Possible values are `Sequential_tag`,
+                          `Parallel_tag`, and `Parallel_if_available_tag`.
+   \tparam PointRange is a model of `Range`. The value type of
+   its iterator is the key type of the named parameter `point_map`.
+
+   \param points input point range
+   \param k number of neighbors (the neighborhood of a point is the point and its `k` nearest neighbors),
+            or, with `neighbor_radius`, the cap on the number of neighbors taken from a ball (0: no cap)
+   \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below;
+             a chain of `CGAL::parameters` works as with `CGAL::jet_estimate_normals()`, and a chain started
+             from `CGAL::RRHT::parameters` also takes the RRHT parameters, in any order
+
+   \cgalNamedParamsBegin
+     \cgalParamNBegin{point_map}
+       \cgalParamDescription{a property map associating points to the elements of the point set `points`}
+       \cgalParamType{a model of `ReadablePropertyMap` whose key type is the value type
+                      of the iterator of `PointRange` and whose value type is `geom_traits::Point_3`}
+       \cgalParamDefault{`CGAL::Identity_property_map<geom_traits::Point_3>`}
+     \cgalParamNEnd
+
+     \cgalParamNBegin{normal_map}
+       \cgalParamDescription{a property map associating normals to the elements of the point set `points`}
+       \cgalParamType{a model of `WritablePropertyMap` whose key type is the value type
+                      of the iterator of `PointRange` and whose value type is `geom_traits::Vector_3`}
+     \cgalParamNEnd
+
+     \cgalParamNBegin{neighbor_radius}
+       \cgalParamDescription{the spherical neighborhood radius}
+       \cgalParamType{floating scalar value}
+       \cgalParamDefault{`0` (no limit)}
+       \cgalParamExtra{If provided, the neighborhood of a point is the set of points within this distance,
+                       the point included. If `k` is not 0 and the ball holds more than `k` other points,
+                       only the `k` nearest are kept, so that no part of the ball is favored. A ball with
+                       fewer than 3 points is replaced by the point and its `k` nearest neighbors (3 if `k` is 0).}
+     \cgalParamNEnd
+
+     \cgalParamNBegin{callback}
+       \cgalParamDescription{a mechanism to get feedback on the advancement of the algorithm
+                             while it's running and to interrupt it if needed}
+       \cgalParamType{an instance of `std::function<bool(double)>`.}
+       \cgalParamDefault{unused}
+       \cgalParamExtra{It is called after every block of 64 points with the current advancement (between 0. and
+                       1.), and with 1. at the end. If it returns `true`, then the
+                       algorithm continues its execution normally; if it returns
+                       `false`, the algorithm is stopped and the remaining normals are left unchanged.}
+       \cgalParamExtra{The callback will be copied and therefore needs to be lightweight.}
+       \cgalParamExtra{When `CGAL::Parallel_tag` is used, the `callback` is called from the worker threads,
+                       one at a time, and shouldn't access or modify the variables that are parameters of the algorithm.}
+     \cgalParamNEnd
+
+     \cgalParamNBegin{random_seed}
+       \cgalParamDescription{the seed of the random draws}
+       \cgalParamType{unsigned int}
+       \cgalParamDefault{`0`}
+       \cgalParamExtra{Each point draws from its own random stream, derived from the seed and its position in `points`.}
+     \cgalParamNEnd
+
+     \cgalParamNBegin{geom_traits}
+       \cgalParamDescription{an instance of a geometric traits class}
+       \cgalParamType{a model of `Kernel`}
+       \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
+     \cgalParamNEnd
+
+     \cgalParamNBegin{number_of_planes}
+       \cgalParamDescription{T_R, the largest number of triples drawn per rotated accumulator (paper, eq. 7)}
+       \cgalParamType{an integer from 1 to 100 000 000}
+       \cgalParamDefault{the Hoeffding bound of eq. 7 with alpha = 0.95, delta = 0.08 and the number M of bins
+                         of the accumulator, `CGAL::RRHT::hoeffding_number_of_planes(M)`: 691 for 15 slices}
+       \cgalParamExtra{With `CGAL::RRHT::Sampling::POINTS`, a neighborhood with fewer triples has each of them drawn once.}
+     \cgalParamNEnd
+
+     \cgalParamNBegin{accumulator_slices}
+       \cgalParamDescription{n_phi, the number of slices of the sphere in the accumulator (paper, Section 3)}
+       \cgalParamType{an integer from 1 to 1000}
+       \cgalParamDefault{`15` (172 bins on the half sphere, see `CGAL::RRHT::Bin_layout`)}
+     \cgalParamNEnd
+
+     \cgalParamNBegin{number_of_rotations}
+       \cgalParamDescription{n_rot, the number of randomly rotated accumulators (paper, Section 4)}
+       \cgalParamType{an integer from 1 to 100 000}
+       \cgalParamDefault{`5`}
+     \cgalParamNEnd
+
+     \cgalParamNBegin{use_confidence_interval}
+       \cgalParamDescription{whether to stop drawing as soon as the 95% confidence intervals of the two most
+                             voted bins are disjoint (paper, eq. 10)}
+       \cgalParamType{bool}
+       \cgalParamDefault{`true`}
+     \cgalParamNEnd
+
+     \cgalParamNBegin{sampling}
+       \cgalParamDescription{how triples of points are drawn (paper, Section 5)}
+       \cgalParamType{`CGAL::RRHT::Sampling`: `POINTS` (RRHT_Points), `CUBES` (RRHT_Cubes) or `UNIF` (RRHT_Unif)}
+       \cgalParamDefault{`CGAL::RRHT::Sampling::POINTS`}
+       \cgalParamExtra{`CUBES` and `UNIF` draw points spatially uniformly in the neighborhood ball: the ball of
+                       `neighbor_radius`, or, for a k-neighborhood or a capped ball, the ball through the farthest
+                       neighbor kept. They resist density variations (anisotropy) at some cost in time.}
+     \cgalParamNEnd
+
+     \cgalParamNBegin{presampling_factor}
+       \cgalParamDescription{c, the discretization of the ball by `CUBES` (c^3 cubes) and `UNIF` (balls of radius r/c)}
+       \cgalParamType{an integer from 1 to 32}
+       \cgalParamDefault{`4`}
+     \cgalParamNEnd
+
+     \cgalParamNBegin{aggregation}
+       \cgalParamDescription{how the normals of the rotated accumulators are combined (paper, Section 4)}
+       \cgalParamType{`CGAL::RRHT::Aggregation`: `MEAN` (RRHT_m), `BEST` (RRHT_b) or `CLUSTER` (RRHT_c)}
+       \cgalParamDefault{`CGAL::RRHT::Aggregation::CLUSTER`}
+     \cgalParamNEnd
+
+     \cgalParamNBegin{cluster_angle}
+       \cgalParamDescription{a_cluster, the angle within which normals form a cluster, in degrees}
+       \cgalParamType{floating scalar value, from 0 to 180}
+       \cgalParamDefault{`45`}
+     \cgalParamNEnd
+   \cgalNamedParamsEnd
+
+   \throws std::invalid_argument if `k` is 0 without a positive `neighbor_radius`, or if a parameter is out
+           of the range given above (a negative or non-finite radius, 0 planes, 0 rotations, 0 slices...).
+   Nothing is written then. An empty range is left as it is.
+*/
+template <typename ConcurrencyTag,
+          typename PointRange,
+          typename NamedParameters = parameters::Default_named_parameters>
+void rrht_estimate_normals(PointRange& points,
+                           unsigned int k,
+                           const NamedParameters& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  namespace rrht_np = RRHT::internal_np;
+
+  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
+  typedef typename NP_helper::Point_map Point_map;
+  typedef typename NP_helper::Normal_map Normal_map;
+  typedef typename NP_helper::Geom_traits Kernel;
+  typedef typename Kernel::FT FT;
+  typedef typename Kernel::Vector_3 Vector_3;
+
+  CGAL_static_assertion_msg(NP_helper::has_normal_map(), "Error: no normal map");
+#ifndef CGAL_LINKED_WITH_TBB
+  CGAL_static_assertion_msg(!(std::is_convertible<ConcurrencyTag, Parallel_tag>::value),
+                            "Parallel_tag is enabled but TBB is unavailable.");
+#endif
+
+  Point_map point_map = NP_helper::get_point_map(points, np);
+  Normal_map normal_map = NP_helper::get_normal_map(points, np);
+  const std::function<bool(double)> callback =
+    choose_parameter(get_parameter(np, internal_np::callback), std::function<bool(double)>());
+
+  // The parameters (paper, Section 6), checked before anything is written.
+  using RRHT::internal::check;
+  const double neighbor_radius = CGAL::to_double(choose_parameter(get_parameter(np, internal_np::neighbor_radius), FT(0)));
+  check(std::isfinite(neighbor_radius) && neighbor_radius >= 0, "neighbor_radius must be finite and non-negative");
+  check(k > 0 || neighbor_radius > 0, "k must be at least 1 when no neighbor_radius is given");
+  const unsigned int accumulator_slices = RRHT::internal::count_in_range<unsigned int>(
+    choose_parameter(get_parameter(np, rrht_np::accumulator_slices), 15u), 1, 1000, "accumulator_slices (n_phi)");
+  const RRHT::Bin_layout layout(accumulator_slices);
+
+  RRHT::internal::Settings settings;
+  settings.k = k;
+  settings.neighbor_radius = neighbor_radius;
+  settings.number_of_planes = RRHT::internal::count_in_range<std::size_t>(
+    choose_parameter(get_parameter(np, rrht_np::number_of_planes), RRHT::hoeffding_number_of_planes(layout.size())),
+    1, 100000000, "number_of_planes (T_R)");
+  settings.use_confidence_interval = choose_parameter(get_parameter(np, rrht_np::use_confidence_interval), true);
+  settings.sampling = choose_parameter(get_parameter(np, rrht_np::sampling), RRHT::Sampling::POINTS);
+  check(settings.sampling == RRHT::Sampling::POINTS || settings.sampling == RRHT::Sampling::CUBES ||
+        settings.sampling == RRHT::Sampling::UNIF, "unknown sampling");
+  settings.presampling_factor = RRHT::internal::count_in_range<unsigned int>(
+    choose_parameter(get_parameter(np, rrht_np::presampling_factor), 4u), 1, 32, "presampling_factor (c)");
+  settings.number_of_rotations = RRHT::internal::count_in_range<unsigned int>(
+    choose_parameter(get_parameter(np, rrht_np::number_of_rotations), 5u), 1, 100000, "number_of_rotations (n_rot)");
+  settings.aggregation = choose_parameter(get_parameter(np, rrht_np::aggregation), RRHT::Aggregation::CLUSTER);
+  check(settings.aggregation == RRHT::Aggregation::MEAN || settings.aggregation == RRHT::Aggregation::BEST ||
+        settings.aggregation == RRHT::Aggregation::CLUSTER, "unknown aggregation");
+  const double cluster_angle = choose_parameter(get_parameter(np, rrht_np::cluster_angle), 45.);
+  check(cluster_angle >= 0 && cluster_angle <= 180, "cluster_angle must be from 0 to 180 degrees");
+  settings.cos_cluster_angle = std::cos(cluster_angle * 3.14159265358979323846 / 180.);
+  settings.seed = choose_parameter(get_parameter(np, internal_np::random_seed), 0u);
+
+  // The cloud in double precision, and its finite points in one kd-tree.
+  std::vector<typename PointRange::iterator> elements;
+  std::vector<RRHT::Neighbor_search::Point> cloud;
+  std::vector<std::size_t> finite;
+  for(auto it = points.begin(); it != points.end(); ++it)
+  {
+    const auto& p = get(point_map, *it);
+    const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y()), z = CGAL::to_double(p.z());
+    if(std::isfinite(x) && std::isfinite(y) && std::isfinite(z))
+      finite.push_back(cloud.size());
+    elements.push_back(it);
+    cloud.emplace_back(x, y, z);
+  }
+  const std::size_t size = cloud.size();
+  if(size == 0)
+    return;
+  if(!finite.empty())
+    settings.k = static_cast<unsigned int>((std::min<std::size_t>)(k, finite.size() - 1));
+  const RRHT::Neighbor_search search(cloud, finite);
+  const RRHT::Cube_weights cube_weights(settings.sampling == RRHT::Sampling::CUBES ? settings.presampling_factor : 1);
+
+  std::vector<char> is_finite(size, 0);
+  for(std::size_t i : finite)
+    is_finite[i] = 1;
+
+  auto process = [&](std::size_t begin, std::size_t end, RRHT::internal::Scratch& scratch) {
+    for(std::size_t i = begin; i < end; ++i)
+    {
+      Eigen::Vector3d n = Eigen::Vector3d::Zero();
+      if(is_finite[i])
+        n = RRHT::internal::estimate_normal(i, search, settings, scratch);
+      put(normal_map, *elements[i], Vector_3(FT(n.x()), FT(n.y()), FT(n.z())));
+    }
+  };
+
+  RRHT::internal::Progress progress(callback, size);
+  const std::size_t block = 64;
+#ifdef CGAL_LINKED_WITH_TBB
+  if(std::is_convertible<ConcurrencyTag, Parallel_tag>::value)
+  {
+    tbb::enumerable_thread_specific<RRHT::internal::Scratch> scratches(
+      [&]() { return RRHT::internal::Scratch(layout, cube_weights, settings.presampling_factor); });
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, size, block),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                        if(progress.interrupted())
+                          return;
+                        process(range.begin(), range.end(), scratches.local());
+                        progress.add(range.size());
+                      });
+  }
+  else
+#endif
+  {
+    RRHT::internal::Scratch scratch(layout, cube_weights, settings.presampling_factor);
+    for(std::size_t begin = 0; begin < size && !progress.interrupted(); begin += block)
+    {
+      const std::size_t end = (std::min)(size, begin + block);
+      process(begin, end, scratch);
+      progress.add(end - begin);
+    }
+  }
+  progress.finish();
+}
+
+} // namespace CGAL
+
+#endif // CGAL_RRHT_ESTIMATE_NORMALS_H
