@@ -90,7 +90,7 @@ Candidate_normal hough_transform(const std::vector<Eigen::Vector3d>& points, Acc
                                  const Settings& settings, DrawTriple draw_triple)
 {
   accumulator.clear();
-  Triple t;
+  Triple t = {{ 0, 0, 0 }};
   for(std::size_t drawn = 0; drawn < settings.number_of_planes; ++drawn)
   {
     if(!draw_triple(t))

@@ -1,0 +1,175 @@
+// Copyright (c) 2026 The CGAL RRHT authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Accuracy against exact normals, and against CGAL::jet_estimate_normals()
+// (K = 80, as in the paper's Section 6) on the same clouds.
+
+#include "shapes.h"
+
+#include <CGAL/rrht_estimate_normals.h>
+#include <CGAL/jet_estimate_normals.h>
+#include <CGAL/IO/polygon_soup_io.h>
+
+#include <catch2/catch.hpp>
+
+#include <fstream>
+#include <random>
+#include <string>
+
+using namespace rrht_test;
+namespace params = CGAL::RRHT::parameters;
+
+namespace {
+
+struct Point_of_sample
+{
+  typedef Sample key_type;
+  typedef Point value_type;
+  typedef const Point& reference;
+  typedef boost::readable_property_map_tag category;
+  friend const Point& get(Point_of_sample, const Sample& s) { return s.point; }
+};
+
+struct Normal_of_sample
+{
+  typedef Sample key_type;
+  typedef Vector value_type;
+  typedef Vector reference;
+  typedef boost::writable_property_map_tag category;
+  friend void put(Normal_of_sample, Sample& s, const Vector& n) { s.normal = n; }
+};
+
+const auto maps = params::point_map(Point_of_sample()).normal_map(Normal_of_sample());
+
+Errors rrht(Cloud& cloud, unsigned int k, CGAL::RRHT::Sampling sampling = CGAL::RRHT::Sampling::POINTS)
+{
+  CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(cloud, k, maps.sampling(sampling));
+  return errors(cloud);
+}
+
+Errors jet(Cloud& cloud)
+{
+  CGAL::jet_estimate_normals<CGAL::Parallel_if_available_tag>(cloud, 80, maps);
+  return errors(cloud);
+}
+
+void print(const char* shape, const char* method, const Errors& e)
+{
+  WARN(shape << ", " << method << ": " << 100 * e.share_above << "% above 10 degrees, RMS " << e.rms
+               << ", RMS_10 " << e.rms_tau << ", max " << e.max);
+}
+
+} // namespace
+
+TEST_CASE("Noiseless plane: every normal within 1 degree", "[accuracy]")
+{
+  Cloud cloud = plane(5000, 1);
+  const Errors e = rrht(cloud, 100);
+  CHECK(e.max < 1);
+}
+
+TEST_CASE("Sphere with 0.2% noise: as good as jet fitting on a smooth surface", "[accuracy]")
+{
+  Cloud cloud = sphere(20000, 2);
+  add_noise(cloud, 0.2, 12);
+  const Errors r = rrht(cloud, 100);
+  const Errors j = jet(cloud);
+  print("sphere", "RRHT", r);
+  print("sphere", "jet", j);
+  // Nothing to keep sharp: both estimators are nearly perfect everywhere.
+  CHECK(r.share_above <= 0.005);
+  CHECK(r.share_above <= j.share_above + 0.005);
+  CHECK(r.rms < 4);
+}
+
+TEST_CASE("Cube with 0.2% noise: RRHT keeps the edges that jet fitting smooths", "[accuracy]")
+{
+  Cloud cloud = cube(20000, 3);
+  add_noise(cloud, 0.2, 13);
+  const Errors r = rrht(cloud, 100);
+  const Errors j = jet(cloud);
+  print("cube", "RRHT", r);
+  print("cube", "jet", j);
+  CHECK(r.share_above < 0.05);
+  CHECK(r.share_above < 0.3 * j.share_above);
+  CHECK(r.rms_tau < 0.6 * j.rms_tau);
+}
+
+TEST_CASE("Closed cylinder with 0.2% noise: RRHT keeps the circular edges", "[accuracy]")
+{
+  Cloud cloud = closed_cylinder(20000, 4);
+  add_noise(cloud, 0.2, 14);
+  const Errors r = rrht(cloud, 100);
+  const Errors j = jet(cloud);
+  print("cylinder", "RRHT", r);
+  print("cylinder", "jet", j);
+  CHECK(r.share_above < 0.05);
+  CHECK(r.share_above < 0.3 * j.share_above);
+  CHECK(r.rms_tau < 0.6 * j.rms_tau);
+}
+
+TEST_CASE("Anisotropic corner (densities 1:5:10): Cubes and Unif beat Points near the edges", "[accuracy]")
+{
+  Cloud cloud = anisotropic_corner(8000, 5);
+  add_noise(cloud, 0.2, 15);
+  // Points within 0.1 of one of the three edges.
+  auto near_edges = [](const Sample& s) {
+    const double x = std::abs(s.point.x()), y = std::abs(s.point.y()), z = std::abs(s.point.z());
+    return (std::min)({ x + y, y + z, x + z }) < 0.1;
+  };
+  rrht(cloud, 100, CGAL::RRHT::Sampling::POINTS);
+  const Errors points = errors(cloud, near_edges);
+  rrht(cloud, 100, CGAL::RRHT::Sampling::CUBES);
+  const Errors cubes = errors(cloud, near_edges);
+  rrht(cloud, 100, CGAL::RRHT::Sampling::UNIF);
+  const Errors unif = errors(cloud, near_edges);
+  print("corner near edges", "RRHT_Points", points);
+  print("corner near edges", "RRHT_Cubes", cubes);
+  print("corner near edges", "RRHT_Unif", unif);
+  CHECK(cubes.share_above < 0.7 * points.share_above);
+  CHECK(unif.share_above < 0.7 * points.share_above);
+  CHECK(cubes.rms_tau < points.rms_tau);
+  CHECK(unif.rms_tau < points.rms_tau);
+}
+
+// Real CAD data from CGAL (../shared/data/meshes/fandisk.off): points drawn
+// uniformly on the faces, the face normal is the truth.
+TEST_CASE("Fandisk mesh from the shared data: RRHT beats jet fitting near sharp edges", "[shared]")
+{
+  const std::string path = std::string(RRHT_SHARED_DATA) + "/meshes/fandisk.off";
+  if(!std::ifstream(path))
+  {
+    WARN("skipped: " << path << " not found");
+    return;
+  }
+  std::vector<Point> vertices;
+  std::vector<std::vector<std::size_t> > faces;
+  REQUIRE(CGAL::IO::read_polygon_soup(path, vertices, faces));
+  std::vector<double> cumulated_area;
+  double total = 0;
+  for(const auto& f : faces)
+  {
+    REQUIRE(f.size() == 3);
+    total += std::sqrt(CGAL::cross_product(vertices[f[1]] - vertices[f[0]], vertices[f[2]] - vertices[f[0]]).squared_length()) / 2;
+    cumulated_area.push_back(total);
+  }
+  std::mt19937 rng(16);
+  std::uniform_real_distribution<double> u(0, 1);
+  Cloud cloud(30000);
+  for(Sample& s : cloud)
+  {
+    const auto& f = faces[std::lower_bound(cumulated_area.begin(), cumulated_area.end(), u(rng) * total) - cumulated_area.begin()];
+    double a = u(rng), b = u(rng);
+    if(a + b > 1) { a = 1 - a; b = 1 - b; }
+    const Point &p = vertices[f[0]], &q = vertices[f[1]], &r = vertices[f[2]];
+    s.point = p + a * (q - p) + b * (r - p);
+    s.truth = CGAL::cross_product(q - p, r - p);
+  }
+  add_noise(cloud, 0.1, 17);
+  const Errors r = rrht(cloud, 100);
+  const Errors j = jet(cloud);
+  print("fandisk", "RRHT", r);
+  print("fandisk", "jet", j);
+  CHECK(r.share_above < 0.6 * j.share_above);
+  CHECK(r.rms_tau < 0.8 * j.rms_tau);
+}

@@ -1,0 +1,286 @@
+// Copyright (c) 2026 The CGAL RRHT authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The parts of the algorithm on their own: accumulator, stopping rules,
+// random streams, triple sampling, aggregation.
+
+#include <CGAL/RRHT/Accumulator.h>
+#include <CGAL/RRHT/aggregation.h>
+#include <CGAL/RRHT/Random.h>
+#include <CGAL/RRHT/Sampling.h>
+#include <CGAL/RRHT/stopping_rules.h>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <map>
+#include <set>
+#include <vector>
+
+using namespace CGAL::RRHT;
+
+namespace {
+Eigen::Vector3d random_direction(Random& rng)
+{
+  Eigen::Vector3d v;
+  do
+    v = Eigen::Vector3d(2 * rng.uniform_real() - 1, 2 * rng.uniform_real() - 1, 2 * rng.uniform_real() - 1);
+  while(v.squaredNorm() > 1 || v.squaredNorm() < 1e-6);
+  return v.normalized();
+}
+} // namespace
+
+TEST_CASE("Accumulator size M is within 15% of the paper's Fig. 4", "[accumulator]")
+{
+  const std::map<unsigned int, double> figure_4 = { { 5, 23 }, { 10, 82 }, { 15, 171 }, { 20, 290 }, { 25, 441 } };
+  for(const auto& entry : figure_4)
+  {
+    const Bin_layout layout(entry.first);
+    INFO("n_phi = " << entry.first << ", M = " << layout.size() << ", paper " << entry.second);
+    CHECK(std::abs(layout.size() - entry.second) <= 0.15 * entry.second);
+  }
+  CHECK(Bin_layout(15).size() == 172); // the documented value for the default
+}
+
+TEST_CASE("Accumulator bins have areas within 10% of each other and tile the half sphere", "[accumulator]")
+{
+  for(unsigned int slices : { 1u, 2u, 3u, 5u, 10u, 15u, 20u, 25u, 40u, 60u })
+  {
+    const Bin_layout layout(slices);
+    double total = 0;
+    for(std::size_t b = 0; b < layout.size(); ++b)
+      total += layout.area(b);
+    INFO("n_phi = " << slices);
+    CHECK(total == Approx(2 * 3.14159265358979323846).epsilon(1e-12));
+    CHECK(layout.area_ratio() >= 0.9);
+  }
+}
+
+TEST_CASE("Every direction maps to a valid bin, n and -n to the same one", "[accumulator]")
+{
+  Random rng(7, 0);
+  for(unsigned int slices : { 1u, 2u, 5u, 14u, 15u, 25u })
+  {
+    const Bin_layout layout(slices);
+    std::vector<int> hits(layout.size(), 0);
+    for(int i = 0; i < 200000; ++i)
+    {
+      const Eigen::Vector3d n = random_direction(rng);
+      const std::size_t b = layout.bin(n);
+      REQUIRE(b < layout.size());
+      REQUIRE(layout.bin(-n) == b);
+      REQUIRE(layout.bin(3.5 * n) == b);
+      ++hits[b];
+    }
+    // Random directions hit every bin in proportion to its area.
+    INFO("n_phi = " << slices);
+    for(std::size_t b = 0; b < layout.size(); ++b)
+    {
+      const double expected = 200000 * layout.area(b) / (2 * 3.14159265358979323846);
+      CHECK(std::abs(hits[b] - expected) < 6 * std::sqrt(expected) + 1);
+    }
+  }
+  // Directions on the boundaries: poles, equator, axes.
+  const Bin_layout layout(15);
+  for(const Eigen::Vector3d& n : { Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0),
+                                   Eigen::Vector3d(1, 1, 0), Eigen::Vector3d(-1, 0, 0), Eigen::Vector3d(1, -1, 0),
+                                   Eigen::Vector3d(0, 1e-300, -1) })
+  {
+    REQUIRE(layout.bin(n) < layout.size());
+    REQUIRE(layout.bin(n) == layout.bin(-n));
+  }
+}
+
+TEST_CASE("The accumulator keeps the two most voted bins and the mean normal of the first", "[accumulator]")
+{
+  const Bin_layout layout(15);
+  Accumulator accumulator(layout);
+  const Eigen::Vector3d a = Eigen::Vector3d(0.1, 0.2, 1).normalized(), b = Eigen::Vector3d(1, 0.05, 0.1).normalized();
+  REQUIRE(layout.bin(a) != layout.bin(b));
+  for(int i = 0; i < 5; ++i)
+    accumulator.vote(i % 2 ? a : Eigen::Vector3d(-2 * a)); // either sign, any length
+  for(int i = 0; i < 3; ++i)
+    accumulator.vote(b);
+  CHECK(accumulator.number_of_votes() == 8);
+  CHECK(accumulator.most_voted_bin() == layout.bin(a));
+  CHECK(accumulator.votes_of_most_voted_bin() == 5);
+  CHECK(accumulator.votes_of_second_most_voted_bin() == 3);
+  CHECK(std::abs(accumulator.normal_of_most_voted_bin().dot(a)) == Approx(1).epsilon(1e-12));
+  for(int i = 0; i < 3; ++i)
+    accumulator.vote(b);
+  CHECK(accumulator.most_voted_bin() == layout.bin(b));
+  CHECK(accumulator.votes_of_second_most_voted_bin() == 5);
+  accumulator.clear();
+  CHECK(accumulator.number_of_votes() == 0);
+  CHECK(accumulator.normal_of_most_voted_bin() == Eigen::Vector3d::Zero());
+}
+
+TEST_CASE("Eq. 7: the Hoeffding bound on the number of planes", "[stopping]")
+{
+  // ln(2 * 171 / 0.05) / (2 * 0.08^2) = 8.8306 / 0.0128 = 689.9
+  CHECK(hoeffding_number_of_planes(171, 0.95, 0.08) == 690);
+  CHECK(hoeffding_number_of_planes(172) == 691);
+  // ln(2 * 100 / 0.1) / (2 * 0.1^2) = 7.6009 / 0.02 = 380.05
+  CHECK(hoeffding_number_of_planes(100, 0.9, 0.1) == 381);
+  CHECK_THROWS_AS(hoeffding_number_of_planes(0), std::invalid_argument);
+  CHECK_THROWS_AS(hoeffding_number_of_planes(10, 1.0, 0.1), std::invalid_argument);
+  CHECK_THROWS_AS(hoeffding_number_of_planes(10, 0.9, 0.0), std::invalid_argument);
+}
+
+TEST_CASE("Eq. 10: disjoint confidence intervals of the two most voted bins", "[stopping]")
+{
+  // p1 - p2 >= 2 / sqrt(T)
+  CHECK(confidence_intervals_are_disjoint(4, 0, 4));     // 1 - 0 >= 2 / 2
+  CHECK(!confidence_intervals_are_disjoint(3, 0, 4));    // 0.75 < 1
+  CHECK(confidence_intervals_are_disjoint(60, 20, 100)); // 0.4 >= 0.2
+  CHECK(!confidence_intervals_are_disjoint(39, 20, 100));// 0.19 < 0.2
+  CHECK(confidence_intervals_are_disjoint(40, 20, 100)); // 0.2 >= 0.2
+  CHECK(!confidence_intervals_are_disjoint(20, 20, 100));
+  CHECK(!confidence_intervals_are_disjoint(0, 0, 0));
+}
+
+TEST_CASE("Random streams depend only on the seed and the stream number", "[random]")
+{
+  Random a(42, 17), b(42, 17), c(42, 18), d(43, 17);
+  const auto x = a();
+  CHECK(x == b());
+  CHECK(x != c());
+  CHECK(x != d());
+  // Uniform indices are unbiased and in range.
+  Random rng(1, 2);
+  std::vector<int> counts(7, 0);
+  for(int i = 0; i < 70000; ++i)
+  {
+    const std::uint32_t k = rng.uniform_index(7);
+    REQUIRE(k < 7);
+    ++counts[k];
+  }
+  for(int c7 : counts)
+    CHECK(std::abs(c7 - 10000) < 500);
+  // Rotations are rotations, and spread uniformly: the mean of R e_z vanishes.
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for(int i = 0; i < 20000; ++i)
+  {
+    const Eigen::Matrix3d r = rng.uniform_rotation();
+    REQUIRE((r * r.transpose() - Eigen::Matrix3d::Identity()).norm() < 1e-12);
+    REQUIRE(r.determinant() == Approx(1).epsilon(1e-12));
+    mean += r.col(2);
+  }
+  CHECK((mean / 20000).norm() < 0.03);
+}
+
+TEST_CASE("RRHT_Points never draws the same triple twice in a run", "[sampling]")
+{
+  Points_sampler sampler;
+  Random rng(3, 4);
+  SECTION("more triples than draws: hash set of drawn triples")
+  {
+    sampler.prepare(30, 1000); // C(30,3) = 4060 > 1000
+    for(int run = 0; run < 3; ++run)
+    {
+      sampler.start_run();
+      std::set<Triple> seen;
+      Triple t;
+      for(int i = 0; i < 1000; ++i)
+      {
+        REQUIRE(sampler.draw(rng, t));
+        REQUIRE(t[0] < t[1]);
+        REQUIRE(t[1] < t[2]);
+        REQUIRE(t[2] < 30);
+        REQUIRE(seen.insert(t).second);
+      }
+    }
+  }
+  SECTION("fewer triples than draws: each triple once, then the run ends")
+  {
+    sampler.prepare(10, 1000); // C(10,3) = 120
+    sampler.start_run();
+    std::set<Triple> seen;
+    Triple t;
+    while(sampler.draw(rng, t))
+      REQUIRE(seen.insert(t).second);
+    CHECK(seen.size() == 120);
+    sampler.start_run();
+    CHECK(sampler.draw(rng, t)); // a new run starts over
+  }
+}
+
+namespace {
+// A dense and a sparse cluster of points in the unit ball: a point-uniform
+// draw favors the dense one, a space-uniform draw does not.
+std::vector<Eigen::Vector3d> dense_and_sparse()
+{
+  std::vector<Eigen::Vector3d> points;
+  Random rng(5, 5);
+  for(int i = 0; i < 900; ++i) // dense: around (-0.5, 0, 0)
+    points.emplace_back(-0.5 + 0.2 * rng.uniform_real(), 0.2 * rng.uniform_real(), 0.2 * rng.uniform_real());
+  for(int i = 0; i < 100; ++i) // sparse: around (0.3, 0, 0)
+    points.emplace_back(0.3 + 0.2 * rng.uniform_real(), 0.2 * rng.uniform_real(), 0.2 * rng.uniform_real());
+  return points;
+}
+} // namespace
+
+TEST_CASE("RRHT_Cubes and RRHT_Unif draw points uniformly in space, not among points", "[sampling]")
+{
+  const std::vector<Eigen::Vector3d> points = dense_and_sparse();
+  Random rng(9, 9);
+  auto sparse_share = [&](auto& sampler) {
+    int sparse = 0;
+    for(int i = 0; i < 20000; ++i)
+      sparse += (sampler.draw_point(rng) >= 900);
+    return sparse / 20000.;
+  };
+  const Cube_weights weights(4);
+  Cubes_sampler cubes(weights);
+  cubes.prepare(points, 1.0);
+  Unif_sampler unif(4);
+  unif.prepare(points, 1.0);
+  // Both clusters fill one cube of side 0.5 (resp. similar small-ball
+  // volumes), so each gets about half of the draws, against 10% for points.
+  CHECK(sparse_share(cubes) == Approx(0.5).margin(0.05));
+  CHECK(sparse_share(unif) == Approx(0.5).margin(0.1));
+
+  Triple t = {{ 0, 0, 0 }};
+  for(int i = 0; i < 1000; ++i)
+  {
+    draw_distinct_triple(cubes, 1000, rng, t);
+    REQUIRE((t[0] != t[1] && t[1] != t[2] && t[0] != t[2]));
+  }
+}
+
+TEST_CASE("Cube weights are the volume of the cubes inside the ball", "[sampling]")
+{
+  for(unsigned int c : { 1u, 2u, 4u, 7u })
+  {
+    const Cube_weights weights(c);
+    double volume = 0;
+    for(std::size_t i = 0; i < std::size_t(c) * c * c; ++i)
+      volume += weights.weight(i) * (8. / (c * c * c));
+    INFO("c = " << c);
+    CHECK(volume == Approx(4. / 3. * 3.14159265358979323846).epsilon(0.01));
+  }
+  const Cube_weights four(4);
+  CHECK(four.weight((1 * 4 + 1) * 4 + 1) == Approx(1)); // an inner cube
+  CHECK(four.weight(0) > 0);                              // a corner cube meets the ball
+  CHECK(four.weight(0) < 0.1);
+}
+
+TEST_CASE("Aggregation: mean, best and cluster", "[aggregation]")
+{
+  const Eigen::Vector3d z(0, 0, 1), x(1, 0, 0);
+  const Eigen::Vector3d z10 = Eigen::Vector3d(std::sin(0.17), 0, std::cos(0.17)); // ~10 degrees from z
+  const std::vector<Candidate_normal> candidates = { { x, 50 }, { z, 30 }, { -z10, 30 }, { Eigen::Vector3d::Zero(), 0 } };
+  const double cos45 = std::cos(3.14159265358979323846 / 4);
+
+  CHECK(aggregate(candidates, Aggregation::BEST, cos45) == x);
+  // The z cluster (60 votes) beats x (50); its mean lies between z and z10.
+  const Eigen::Vector3d c = aggregate(candidates, Aggregation::CLUSTER, cos45);
+  CHECK(std::abs(c.dot((z + z10).normalized())) == Approx(1).epsilon(1e-12));
+  // The mean mixes everything, weighted by votes, signs aligned.
+  const Eigen::Vector3d m = aggregate(candidates, Aggregation::MEAN, cos45);
+  CHECK(m.norm() == Approx(1));
+  CHECK(std::abs(m.dot(x)) > 0.5);
+  CHECK(std::abs(m.dot(z)) > 0.5);
+  // No run voted: the zero vector.
+  CHECK(aggregate({ { Eigen::Vector3d::Zero(), 0 } }, Aggregation::CLUSTER, cos45) == Eigen::Vector3d::Zero());
+}
