@@ -1,0 +1,449 @@
+// Copyright (c) 2026 The CGAL RRHT authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The interface: ranges and kernels, named parameters, concurrency and
+// reproducibility, callback, neighborhoods, and bad input.
+
+#include "shapes.h"
+
+#include <CGAL/rrht_estimate_normals.h>
+#include <CGAL/jet_estimate_normals.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Point_set_3.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include <catch2/catch.hpp>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <list>
+#include <mutex>
+#include <utility>
+#include <vector>
+
+namespace params = CGAL::RRHT::parameters;
+using CGAL::RRHT::Sampling;
+using CGAL::RRHT::Aggregation;
+
+namespace {
+
+template <typename Kernel>
+using Point_with_normal = std::pair<typename Kernel::Point_3, typename Kernel::Vector_3>;
+
+template <typename Kernel>
+using Pair_cloud = std::vector<Point_with_normal<Kernel> >;
+
+template <typename Kernel>
+const auto pair_maps = CGAL::parameters::point_map(CGAL::First_of_pair_property_map<Point_with_normal<Kernel> >())
+                         .normal_map(CGAL::Second_of_pair_property_map<Point_with_normal<Kernel> >());
+
+template <typename Kernel>
+Pair_cloud<Kernel> to_pairs(const rrht_test::Cloud& cloud)
+{
+  typedef typename Kernel::FT FT;
+  Pair_cloud<Kernel> out;
+  for(const auto& s : cloud)
+    out.emplace_back(typename Kernel::Point_3(FT(s.point.x()), FT(s.point.y()), FT(s.point.z())),
+                     typename Kernel::Vector_3(CGAL::NULL_VECTOR));
+  return out;
+}
+
+// Share of normals more than 10 degrees off the truth; also checks that every
+// normal is finite and of unit length.
+template <typename Vector3>
+double share_above_10_degrees(const std::vector<Vector3>& normals, const rrht_test::Cloud& truth)
+{
+  REQUIRE(normals.size() == truth.size());
+  std::size_t bad = 0;
+  for(std::size_t i = 0; i < normals.size(); ++i)
+  {
+    const double x = CGAL::to_double(normals[i].x()), y = CGAL::to_double(normals[i].y()), z = CGAL::to_double(normals[i].z());
+    REQUIRE(std::isfinite(x));
+    REQUIRE(std::isfinite(y));
+    REQUIRE(std::isfinite(z));
+    REQUIRE(std::sqrt(x * x + y * y + z * z) == Approx(1).epsilon(1e-5));
+    const rrht_test::Vector& t = truth[i].truth;
+    bad += std::abs(x * t.x() + y * t.y() + z * t.z()) < std::cos(10 * rrht_test::pi / 180);
+  }
+  return double(bad) / normals.size();
+}
+
+template <typename Kernel>
+std::vector<typename Kernel::Vector_3> normals_of(const Pair_cloud<Kernel>& cloud)
+{
+  std::vector<typename Kernel::Vector_3> out;
+  for(const auto& pn : cloud)
+    out.push_back(pn.second);
+  return out;
+}
+
+rrht_test::Cloud noisy_cube(std::size_t n)
+{
+  rrht_test::Cloud cloud = rrht_test::cube(n, 21);
+  rrht_test::add_noise(cloud, 0.2, 22);
+  return cloud;
+}
+
+bool has_nan(const std::vector<CGAL::Simple_cartesian<double>::Vector_3>& normals)
+{
+  for(const auto& n : normals)
+    if(!(std::isfinite(n.x()) && std::isfinite(n.y()) && std::isfinite(n.z())))
+      return true;
+  return false;
+}
+
+typedef CGAL::Simple_cartesian<double> SC;
+
+} // namespace
+
+TEMPLATE_TEST_CASE("Works on a vector of pairs with pair property maps, for several kernels", "[api]",
+                   CGAL::Simple_cartesian<double>, CGAL::Exact_predicates_inexact_constructions_kernel,
+                   CGAL::Simple_cartesian<float>)
+{
+  const rrht_test::Cloud truth = noisy_cube(6000);
+  Pair_cloud<TestType> cloud = to_pairs<TestType>(truth);
+  CGAL::rrht_estimate_normals<CGAL::Sequential_tag>(cloud, 60, pair_maps<TestType>);
+  CHECK(share_above_10_degrees(normals_of<TestType>(cloud), truth) < 0.06);
+}
+
+TEST_CASE("Works on a CGAL::Point_set_3 with its own maps, with the same result as on a vector", "[api]")
+{
+  const rrht_test::Cloud truth = noisy_cube(6000);
+  CGAL::Point_set_3<SC::Point_3> point_set;
+  point_set.add_normal_map();
+  for(const auto& s : truth)
+    point_set.insert(s.point);
+  CGAL::rrht_estimate_normals<CGAL::Sequential_tag>(point_set, 60);
+
+  Pair_cloud<SC> pairs = to_pairs<SC>(truth);
+  CGAL::rrht_estimate_normals<CGAL::Sequential_tag>(pairs, 60, pair_maps<SC>);
+
+  std::vector<SC::Vector_3> normals;
+  for(auto i : point_set)
+    normals.push_back(point_set.normal(i));
+  CHECK(normals == normals_of<SC>(pairs));
+  CHECK(share_above_10_degrees(normals, truth) < 0.06);
+}
+
+namespace {
+// A user's own type, with property maps of its own.
+struct Scan_point
+{
+  double xyz[3];
+  float normal[3];
+  int label;
+};
+
+struct Scan_point_map
+{
+  typedef Scan_point key_type;
+  typedef SC::Point_3 value_type;
+  typedef value_type reference;
+  typedef boost::readable_property_map_tag category;
+  friend value_type get(Scan_point_map, const Scan_point& p) { return value_type(p.xyz[0], p.xyz[1], p.xyz[2]); }
+};
+
+struct Scan_normal_map
+{
+  typedef Scan_point key_type;
+  typedef SC::Vector_3 value_type;
+  typedef value_type reference;
+  typedef boost::writable_property_map_tag category;
+  friend void put(Scan_normal_map, Scan_point& p, const value_type& n)
+  {
+    p.normal[0] = float(n.x()); p.normal[1] = float(n.y()); p.normal[2] = float(n.z());
+  }
+};
+} // namespace
+
+TEST_CASE("Works on a user struct with custom property maps and a std::list", "[api]")
+{
+  const rrht_test::Cloud truth = noisy_cube(6000);
+  std::list<Scan_point> scan;
+  for(const auto& s : truth)
+    scan.push_back(Scan_point{ { s.point.x(), s.point.y(), s.point.z() }, { 0, 0, 0 }, 7 });
+  CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(
+    scan, 60, params::point_map(Scan_point_map()).normal_map(Scan_normal_map()).number_of_rotations(3));
+  std::vector<SC::Vector_3> normals;
+  for(const auto& p : scan)
+  {
+    normals.emplace_back(p.normal[0], p.normal[1], p.normal[2]);
+    CHECK(p.label == 7);
+  }
+  CHECK(share_above_10_degrees(normals, truth) < 0.06);
+}
+
+TEST_CASE("Every documented named-parameter form", "[api][parameters]")
+{
+  typedef Point_with_normal<SC> PN;
+  const CGAL::First_of_pair_property_map<PN> point_map;
+  const CGAL::Second_of_pair_property_map<PN> normal_map;
+  const rrht_test::Cloud truth = noisy_cube(2000);
+  const Pair_cloud<SC> input = to_pairs<SC>(truth);
+
+  auto run = [&](const auto& np) {
+    Pair_cloud<SC> cloud = input;
+    CGAL::rrht_estimate_normals<CGAL::Sequential_tag>(cloud, 40, np);
+    return normals_of<SC>(cloud);
+  };
+
+  // 1. A plain CGAL chain, exactly as for jet fitting: RRHT defaults.
+  const auto defaults = run(CGAL::parameters::point_map(point_map).normal_map(normal_map));
+  CHECK(share_above_10_degrees(defaults, truth) < 0.08);
+  {
+    Pair_cloud<SC> cloud = input; // the same expression still works with jet fitting
+    CGAL::jet_estimate_normals<CGAL::Sequential_tag>(cloud, 40, CGAL::parameters::point_map(point_map).normal_map(normal_map));
+  }
+  // 2. An RRHT chain repeating the defaults explicitly gives the same normals.
+  const auto explicit_defaults = run(params::point_map(point_map)
+                                       .normal_map(normal_map)
+                                       .number_of_planes(CGAL::RRHT::hoeffding_number_of_planes(172))
+                                       .accumulator_slices(15)
+                                       .number_of_rotations(5)
+                                       .use_confidence_interval(true)
+                                       .sampling(Sampling::POINTS)
+                                       .presampling_factor(4)
+                                       .aggregation(Aggregation::CLUSTER)
+                                       .cluster_angle(45.)
+                                       .random_seed(0));
+  CHECK(explicit_defaults == defaults);
+  // 3. RRHT parameters first, then CGAL ones, in any order: the same normals.
+  const auto fast = run(params::number_of_planes(300).point_map(point_map).number_of_rotations(2).normal_map(normal_map));
+  const auto fast_reordered = run(params::normal_map(normal_map).number_of_rotations(2).point_map(point_map).number_of_planes(300));
+  CHECK(fast == fast_reordered);
+  CHECK(fast != defaults); // the parameters are read
+  // 4. From an empty chain.
+  CHECK(run(params::default_values().point_map(point_map).normal_map(normal_map)) == defaults);
+  // 5. Extending a CGAL chain received from elsewhere.
+  const auto cgal_chain = CGAL::parameters::point_map(point_map).normal_map(normal_map);
+  CHECK(run(params::extend(cgal_chain).number_of_rotations(2).number_of_planes(300)) == fast);
+  CHECK(run(params::extend(cgal_chain)) == defaults);
+  // 6. Each RRHT parameter changes the result.
+  const auto base = params::point_map(point_map).normal_map(normal_map);
+  CHECK(run(base.accumulator_slices(10)) != defaults);
+  CHECK(run(base.use_confidence_interval(false)) != defaults);
+  CHECK(run(base.sampling(Sampling::CUBES)) != defaults);
+  CHECK(run(base.sampling(Sampling::CUBES).presampling_factor(3)) != run(base.sampling(Sampling::CUBES)));
+  CHECK(run(base.sampling(Sampling::UNIF)) != defaults);
+  CHECK(run(base.aggregation(Aggregation::MEAN)) != defaults);
+  CHECK(run(base.aggregation(Aggregation::BEST)) != defaults);
+  CHECK(run(base.cluster_angle(5.)) != defaults);
+  CHECK(run(base.random_seed(7)) != defaults);
+  // 7. An RRHT chain is a CGAL chain: CGAL's own functions take it.
+  {
+    Pair_cloud<SC> cloud = input;
+    CGAL::jet_estimate_normals<CGAL::Sequential_tag>(cloud, 40, base.number_of_planes(300).degree_fitting(2));
+    CHECK(share_above_10_degrees(normals_of<SC>(cloud), truth) < 0.5);
+  }
+}
+
+#ifdef CGAL_LINKED_WITH_TBB
+TEST_CASE("Same seed, same normals, bit for bit, whatever the concurrency and the number of threads", "[api][parallel]")
+{
+  const rrht_test::Cloud truth = noisy_cube(2000);
+  for(Sampling sampling : { Sampling::POINTS, Sampling::CUBES, Sampling::UNIF })
+  {
+    const auto np = pair_maps<SC>;
+    Pair_cloud<SC> sequential = to_pairs<SC>(truth);
+    CGAL::rrht_estimate_normals<CGAL::Sequential_tag>(sequential, 50, params::extend(np).sampling(sampling).random_seed(3));
+    for(int threads : { 1, 2, 3 })
+    {
+      tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+      Pair_cloud<SC> parallel = to_pairs<SC>(truth);
+      CGAL::rrht_estimate_normals<CGAL::Parallel_tag>(parallel, 50, params::extend(np).sampling(sampling).random_seed(3));
+      INFO("sampling " << int(sampling) << ", " << threads << " threads");
+      CHECK(normals_of<SC>(parallel) == normals_of<SC>(sequential));
+    }
+  }
+}
+#endif
+
+TEST_CASE("The callback reports progress, and returning false stops, leaving the rest unchanged", "[api][callback]")
+{
+  const rrht_test::Cloud truth = noisy_cube(5000);
+  const SC::Vector_3 untouched(7, 7, 7);
+  auto check_tag = [&](auto tag) {
+    typedef decltype(tag) Tag;
+    // A full run: advancement in [0, 1], ending with 1.
+    {
+      Pair_cloud<SC> cloud = to_pairs<SC>(truth);
+      std::vector<double> seen;
+      std::mutex mutex;
+      std::function<bool(double)> callback = [&](double advancement) {
+        std::lock_guard<std::mutex> lock(mutex);
+        seen.push_back(advancement);
+        return true;
+      };
+      CGAL::rrht_estimate_normals<Tag>(cloud, 30, params::extend(pair_maps<SC>).callback(callback));
+      REQUIRE(!seen.empty());
+      CHECK(seen.back() == 1.);
+      for(double a : seen)
+        CHECK((a >= 0 && a <= 1));
+    }
+    // Interrupted at the first report.
+    {
+      Pair_cloud<SC> cloud = to_pairs<SC>(truth);
+      for(auto& pn : cloud)
+        pn.second = untouched;
+      std::function<bool(double)> stop = [](double) { return false; };
+      CGAL::rrht_estimate_normals<Tag>(cloud, 30, params::extend(pair_maps<SC>).callback(stop));
+      std::size_t estimated = 0, unchanged = 0;
+      for(const auto& pn : cloud)
+      {
+        if(pn.second == untouched)
+          ++unchanged;
+        else
+        {
+          ++estimated;
+          CHECK(pn.second.squared_length() == Approx(1));
+        }
+      }
+      CHECK(estimated > 0);
+      CHECK(unchanged > cloud.size() / 2);
+    }
+  };
+  check_tag(CGAL::Sequential_tag());
+#ifdef CGAL_LINKED_WITH_TBB
+  check_tag(CGAL::Parallel_tag());
+#endif
+}
+
+TEST_CASE("Ball neighborhoods: with and without a cap on the number of points", "[api][radius]")
+{
+  const rrht_test::Cloud truth = noisy_cube(8000);
+  // 8000 points on an area of 24: about 333 points per unit area.
+  SECTION("uncapped ball")
+  {
+    for(Sampling sampling : { Sampling::POINTS, Sampling::CUBES, Sampling::UNIF })
+    {
+      Pair_cloud<SC> cloud = to_pairs<SC>(truth);
+      CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(
+        cloud, 0, params::extend(pair_maps<SC>).neighbor_radius(0.25).sampling(sampling));
+      INFO("sampling " << int(sampling));
+      CHECK(share_above_10_degrees(normals_of<SC>(cloud), truth) < 0.06);
+    }
+  }
+  SECTION("a capped ball keeps the k nearest: the same as the k-neighborhood")
+  {
+    for(Sampling sampling : { Sampling::POINTS, Sampling::CUBES })
+    {
+      Pair_cloud<SC> capped = to_pairs<SC>(truth), knn = to_pairs<SC>(truth);
+      CGAL::rrht_estimate_normals<CGAL::Sequential_tag>(capped, 40,
+                                                        params::extend(pair_maps<SC>).neighbor_radius(10.).sampling(sampling));
+      CGAL::rrht_estimate_normals<CGAL::Sequential_tag>(knn, 40, params::extend(pair_maps<SC>).sampling(sampling));
+      CHECK(normals_of<SC>(capped) == normals_of<SC>(knn));
+    }
+  }
+  SECTION("a capped ball smaller than the cap is the ball")
+  {
+    Pair_cloud<SC> capped = to_pairs<SC>(truth), ball = to_pairs<SC>(truth);
+    CGAL::rrht_estimate_normals<CGAL::Sequential_tag>(capped, 100000, params::extend(pair_maps<SC>).neighbor_radius(0.2));
+    CGAL::rrht_estimate_normals<CGAL::Sequential_tag>(ball, 0, params::extend(pair_maps<SC>).neighbor_radius(0.2));
+    // Same points, in another order: the normals agree within a few degrees.
+    CHECK(share_above_10_degrees(normals_of<SC>(capped), truth) < 0.06);
+    CHECK(share_above_10_degrees(normals_of<SC>(ball), truth) < 0.06);
+  }
+  SECTION("a ball with fewer than 3 points falls back to the k nearest neighbors")
+  {
+    Pair_cloud<SC> tiny = to_pairs<SC>(truth), knn = to_pairs<SC>(truth);
+    CGAL::rrht_estimate_normals<CGAL::Sequential_tag>(tiny, 30, params::extend(pair_maps<SC>).neighbor_radius(1e-9));
+    CGAL::rrht_estimate_normals<CGAL::Sequential_tag>(knn, 30, pair_maps<SC>);
+    CHECK(normals_of<SC>(tiny) == normals_of<SC>(knn));
+  }
+}
+
+TEST_CASE("Bad input: a clear exception or a documented result, never NaN", "[api][bad-input]")
+{
+  typedef Point_with_normal<SC> PN;
+  auto estimate = [](Pair_cloud<SC>& cloud, unsigned int k, const auto& np) {
+    CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(cloud, k, np);
+    return normals_of<SC>(cloud);
+  };
+  const auto maps = params::extend(pair_maps<SC>);
+  const SC::Vector_3 null(CGAL::NULL_VECTOR);
+
+  SECTION("empty range: nothing to do")
+  {
+    Pair_cloud<SC> cloud;
+    CHECK_NOTHROW(estimate(cloud, 10, maps));
+  }
+  SECTION("1 and 2 points, all points identical, collinear points: the null vector")
+  {
+    for(std::size_t n : { 1, 2 })
+    {
+      Pair_cloud<SC> cloud;
+      for(std::size_t i = 0; i < n; ++i)
+        cloud.emplace_back(SC::Point_3(double(i), 0, 0), SC::Vector_3(1, 1, 1));
+      for(const auto& normal : estimate(cloud, 10, maps))
+        CHECK(normal == null);
+    }
+    Pair_cloud<SC> same(50, PN(SC::Point_3(1, 2, 3), SC::Vector_3(1, 1, 1)));
+    for(Sampling sampling : { Sampling::POINTS, Sampling::CUBES, Sampling::UNIF })
+      for(const auto& normal : estimate(same, 10, maps.sampling(sampling)))
+        CHECK(normal == null);
+    Pair_cloud<SC> line;
+    for(int i = 0; i < 50; ++i)
+      line.emplace_back(SC::Point_3(0.5 * i, 0, 0), SC::Vector_3(1, 1, 1));
+    for(Sampling sampling : { Sampling::POINTS, Sampling::CUBES, Sampling::UNIF })
+      for(const auto& normal : estimate(line, 10, maps.sampling(sampling)))
+        CHECK(normal == null);
+  }
+  SECTION("k larger than the number of points: all points are neighbors")
+  {
+    Pair_cloud<SC> cloud = to_pairs<SC>(rrht_test::plane(20, 3));
+    for(const auto& normal : estimate(cloud, 1000, maps))
+      CHECK(std::abs(normal.z()) == Approx(1));
+  }
+  SECTION("NaN or infinite coordinates: the null vector there, the other points unaffected")
+  {
+    const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+    Pair_cloud<SC> cloud = to_pairs<SC>(rrht_test::plane(300, 4));
+    cloud[5].first = SC::Point_3(nan, 0, 0);
+    cloud[6].first = SC::Point_3(0, inf, 0);
+    cloud[7].first = SC::Point_3(0, 0, -inf);
+    const auto normals = estimate(cloud, 20, maps);
+    CHECK(!has_nan(normals));
+    for(std::size_t i = 0; i < normals.size(); ++i)
+    {
+      if(i >= 5 && i <= 7)
+        CHECK(normals[i] == null);
+      else
+        CHECK(std::abs(normals[i].z()) == Approx(1));
+    }
+  }
+  SECTION("invalid parameters throw std::invalid_argument and write nothing")
+  {
+    const Pair_cloud<SC> input = to_pairs<SC>(rrht_test::plane(100, 5));
+    auto throws = [&](unsigned int k, const auto& np) {
+      Pair_cloud<SC> cloud = input;
+      CHECK_THROWS_AS(estimate(cloud, k, np), std::invalid_argument);
+      for(const auto& pn : cloud)
+        CHECK(pn.second == null);
+    };
+    throws(0, maps);                                  // k = 0 without radius
+    throws(10, maps.neighbor_radius(-1.));
+    throws(10, maps.neighbor_radius(std::numeric_limits<double>::quiet_NaN()));
+    throws(10, maps.number_of_planes(0));             // T = 0
+    throws(10, maps.number_of_planes(-5));
+    throws(10, maps.number_of_rotations(0));          // n_rot = 0
+    throws(10, maps.accumulator_slices(0));           // n_phi = 0
+    throws(10, maps.presampling_factor(0));
+    throws(10, maps.presampling_factor(33));
+    throws(10, maps.cluster_angle(-1.));
+    throws(10, maps.cluster_angle(std::numeric_limits<double>::quiet_NaN()));
+    throws(10, maps.sampling(static_cast<Sampling>(42)));
+    throws(10, maps.aggregation(static_cast<Aggregation>(42)));
+  }
+  SECTION("extreme but valid parameters")
+  {
+    Pair_cloud<SC> cloud = to_pairs<SC>(noisy_cube(500));
+    CHECK(!has_nan(estimate(cloud, 10, maps.number_of_planes(1).number_of_rotations(1).accumulator_slices(1))));
+    CHECK(!has_nan(estimate(cloud, 10, maps.sampling(Sampling::UNIF).presampling_factor(32))));
+    CHECK(!has_nan(estimate(cloud, 10, maps.sampling(Sampling::CUBES).presampling_factor(1).cluster_angle(0.))));
+  }
+}

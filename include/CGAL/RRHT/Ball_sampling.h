@@ -196,14 +196,24 @@ private:
   std::vector<double> m_cumulated;   // their cumulated weights
 };
 
-/// RRHT_Unif: pick a small ball B of radius r/c centered uniformly in the
+/// RRHT_Unif: pick a small ball B of radius s = r/c centered uniformly in the
 /// neighborhood ball B_P, redraw it while it holds no point, then pick a
-/// point of B uniformly. The points of B are found in a grid of cell size
-/// r/c over the neighborhood, so only the 27 cells around B's center are
-/// looked at. B_P contains the ball of radius r/c around P itself, so a draw
-/// succeeds with probability at least 1/c^3; after 100 000 empty draws (which
-/// can only happen when the radius is far below the point spacing) a point is
-/// drawn uniformly instead.
+/// point of B uniformly. The points of B are found in a grid of cell size s
+/// over the neighborhood, so only the 27 cells around B's center are looked
+/// at.
+///
+/// Redrawing until B is not empty makes B's center uniform over U, the part
+/// of B_P within s of some neighbor. Two exact ways to draw from U are used,
+/// whichever is cheaper:
+/// - rejection from B_P, as in the paper: about vol(B_P) / vol(U) draws;
+/// - from the neighbors: pick a neighbor q, a center x uniform in the ball of
+///   radius s around q (kept if in B_P), and keep x with probability 1/m, m
+///   being the number of neighbors within s of x (the balls around them
+///   overlap at x): about (n vol(s-ball)) / vol(U) draws for n neighbors.
+/// Their ratio is n / c^3: the second is used when the neighbors are fewer
+/// than c^3 (small neighborhoods, or a large c), where the first would need
+/// up to c^3 draws. After 100 000 failed draws (only possible through
+/// rounding) a point is drawn uniformly instead.
 class Unif_sampler
 {
 public:
@@ -215,49 +225,72 @@ public:
     m_radius = radius;
     m_small_radius = radius / m_c;
     m_grid.build(points, radius, 2 * m_c);
+    m_from_neighbors = double(points.size()) < double(m_c) * m_c * m_c;
   }
 
   std::uint32_t draw_point(Random& rng)
   {
-    const double r2 = m_small_radius * m_small_radius;
+    const std::uint32_t n = std::uint32_t(m_points->size());
     for(int attempt = 0; attempt < 100000; ++attempt)
     {
-      // Center of B, uniform in B_P (rejection from the enclosing cube).
       Eigen::Vector3d center;
-      do
-        center = Eigen::Vector3d(2 * rng.uniform_real() - 1, 2 * rng.uniform_real() - 1, 2 * rng.uniform_real() - 1);
-      while(center.squaredNorm() > 1);
-      center *= m_radius;
-
-      m_candidates.clear();
-      std::uint32_t lo[3], hi[3];
-      for(int d = 0; d < 3; ++d)
+      if(m_from_neighbors)
       {
-        lo[d] = m_grid.coordinate(center[d] - m_small_radius);
-        hi[d] = m_grid.coordinate(center[d] + m_small_radius);
+        center = (*m_points)[rng.uniform_index(n)] + m_small_radius * uniform_in_unit_ball(rng);
+        if(center.squaredNorm() > m_radius * m_radius)
+          continue;
       }
-      for(std::uint32_t i = lo[0]; i <= hi[0]; ++i)
-        for(std::uint32_t j = lo[1]; j <= hi[1]; ++j)
-          for(std::uint32_t k = lo[2]; k <= hi[2]; ++k)
-          {
-            const auto range = m_grid.points_in(m_grid.cell(i, j, k));
-            for(std::uint32_t e = range.first; e < range.second; ++e)
-            {
-              const std::uint32_t p = m_grid.point(e);
-              if(((*m_points)[p] - center).squaredNorm() <= r2)
-                m_candidates.push_back(p);
-            }
-          }
-      if(!m_candidates.empty())
-        return m_candidates[rng.uniform_index(std::uint32_t(m_candidates.size()))];
+      else
+        center = m_radius * uniform_in_unit_ball(rng);
+
+      collect_points_near(center);
+      const std::uint32_t m = std::uint32_t(m_candidates.size());
+      if(m == 0 || (m_from_neighbors && rng.uniform_index(m) != 0))
+        continue;
+      return m_candidates[rng.uniform_index(m)];
     }
-    return rng.uniform_index(std::uint32_t(m_points->size()));
+    return rng.uniform_index(n);
   }
 
 private:
+  static Eigen::Vector3d uniform_in_unit_ball(Random& rng)
+  {
+    Eigen::Vector3d x;
+    do
+      x = Eigen::Vector3d(2 * rng.uniform_real() - 1, 2 * rng.uniform_real() - 1, 2 * rng.uniform_real() - 1);
+    while(x.squaredNorm() > 1);
+    return x;
+  }
+
+  // The neighbors within the small radius of `center`, in `m_candidates`.
+  void collect_points_near(const Eigen::Vector3d& center)
+  {
+    const double r2 = m_small_radius * m_small_radius;
+    m_candidates.clear();
+    std::uint32_t lo[3], hi[3];
+    for(int d = 0; d < 3; ++d)
+    {
+      lo[d] = m_grid.coordinate(center[d] - m_small_radius);
+      hi[d] = m_grid.coordinate(center[d] + m_small_radius);
+    }
+    for(std::uint32_t i = lo[0]; i <= hi[0]; ++i)
+      for(std::uint32_t j = lo[1]; j <= hi[1]; ++j)
+        for(std::uint32_t k = lo[2]; k <= hi[2]; ++k)
+        {
+          const auto range = m_grid.points_in(m_grid.cell(i, j, k));
+          for(std::uint32_t e = range.first; e < range.second; ++e)
+          {
+            const std::uint32_t p = m_grid.point(e);
+            if(((*m_points)[p] - center).squaredNorm() <= r2)
+              m_candidates.push_back(p);
+          }
+        }
+  }
+
   unsigned int m_c;
   const std::vector<Eigen::Vector3d>* m_points = nullptr;
   double m_radius = 1, m_small_radius = 1;
+  bool m_from_neighbors = false;
   Grid_of_neighborhood m_grid;
   std::vector<std::uint32_t> m_candidates;
 };
