@@ -82,30 +82,30 @@ TEST_CASE("Sphere with 0.2% noise: as good as jet fitting on a smooth surface", 
   CHECK(r.rms < 4);
 }
 
-TEST_CASE("Cube with 0.2% noise: RRHT keeps the edges that jet fitting smooths", "[accuracy]")
+namespace {
+// A shape with sharp edges and 0.2% noise: RRHT (cluster) has a clearly
+// smaller share of points off by more than 10 degrees than jet fitting.
+void check_sharp_edges_kept(const char* shape, Cloud cloud, unsigned int seed)
 {
-  Cloud cloud = cube(20000, 3);
-  add_noise(cloud, 0.2, 13);
+  add_noise(cloud, 0.2, seed);
   const Errors r = rrht(cloud, 100);
   const Errors j = jet(cloud);
-  print("cube", "RRHT", r);
-  print("cube", "jet", j);
+  print(shape, "RRHT", r);
+  print(shape, "jet", j);
   CHECK(r.share_above < 0.05);
   CHECK(r.share_above < 0.3 * j.share_above);
   CHECK(r.rms_tau < 0.6 * j.rms_tau);
 }
+} // namespace
+
+TEST_CASE("Cube with 0.2% noise: RRHT keeps the edges that jet fitting smooths", "[accuracy]")
+{
+  check_sharp_edges_kept("cube", cube(20000, 3), 13);
+}
 
 TEST_CASE("Closed cylinder with 0.2% noise: RRHT keeps the circular edges", "[accuracy]")
 {
-  Cloud cloud = closed_cylinder(20000, 4);
-  add_noise(cloud, 0.2, 14);
-  const Errors r = rrht(cloud, 100);
-  const Errors j = jet(cloud);
-  print("cylinder", "RRHT", r);
-  print("cylinder", "jet", j);
-  CHECK(r.share_above < 0.05);
-  CHECK(r.share_above < 0.3 * j.share_above);
-  CHECK(r.rms_tau < 0.6 * j.rms_tau);
+  check_sharp_edges_kept("cylinder", closed_cylinder(20000, 4), 14);
 }
 
 TEST_CASE("Anisotropic corner (densities 1:5:10): Cubes and Unif beat Points near the edges", "[accuracy]")

@@ -120,11 +120,13 @@ public:
   const Vector& center(std::size_t bin) const { return m_center[bin]; }
 
   /// Bin of the direction of `n` (any nonzero vector); `n` and `-n` have the same bin.
-  std::size_t bin(const Vector& n) const
+  std::size_t bin(const Vector& n) const { return bin_of_unit(n.normalized()); }
+
+  /// Bin of the unit vector `n`.
+  std::size_t bin_of_unit(const Vector& n) const
   {
     const double pi = 3.14159265358979323846;
-    const double norm = n.norm();
-    double x = n.x() / norm, y = n.y() / norm, z = n.z() / norm;
+    double x = n.x(), y = n.y(), z = n.z();
     // Representative of {n, -n} on the upper half sphere; on the equator, the
     // one with y > 0 (or x > 0 when y = 0).
     if(z < 0 || (z == 0 && (y < 0 || (y == 0 && x < 0))))
@@ -201,8 +203,8 @@ public:
   /// center, so that the sum of a bin never cancels itself.
   void vote(const Vector& n)
   {
-    const std::size_t b = m_layout->bin(n);
     const Vector unit = n.normalized();
+    const std::size_t b = m_layout->bin_of_unit(unit);
     m_sums[b] += (unit.dot(m_layout->center(b)) >= 0) ? unit : Vector(-unit);
     ++m_votes[b];
     ++m_number_of_votes;

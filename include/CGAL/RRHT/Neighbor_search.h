@@ -17,9 +17,12 @@
 
 #include <Eigen/Core>
 
+#include <boost/iterator/function_output_iterator.hpp>
+
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <iterator>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -48,6 +51,10 @@ struct Neighborhood
 ///   (as the first points met by the tree traversal would). A ball of fewer
 ///   than 3 points falls back to the k nearest neighbors (3 when k = 0).
 ///
+/// Neighbors are listed nearest first (ties by index for balls), so a
+/// neighborhood does not depend on how the tree was traversed, and a ball
+/// whose cap is not reached is the same neighborhood as the uncapped ball.
+///
 /// The tree holds indices into the cloud; points whose index is not given to
 /// the constructor (e.g. those with non-finite coordinates) are never
 /// neighbors.
@@ -71,7 +78,7 @@ public:
   /// Per-thread buffer of the search, reused from one query to the next.
   struct Scratch
   {
-    std::vector<std::size_t> ball;
+    std::vector<std::pair<double, std::size_t> > ball; // squared distance, index
   };
 
   /// `points`: the whole cloud (kept by reference); `indexed`: the indices of
@@ -96,11 +103,15 @@ public:
       if(k == 0)
       {
         scratch.ball.clear();
-        m_tree.search(std::back_inserter(scratch.ball), Sphere(q, radius, 0., m_traits));
+        m_tree.search(boost::make_function_output_iterator(Collect_with_distance{ &scratch.ball, &m_points, &q }),
+                      Sphere(q, radius, 0., m_traits));
         if(scratch.ball.size() >= 3)
         {
-          for(std::size_t i : scratch.ball)
-            out.points.push_back(relative(i, q));
+          // Nearest first, like the k-neighborhoods, rather than in the
+          // order of the tree traversal.
+          std::sort(scratch.ball.begin(), scratch.ball.end());
+          for(const auto& neighbor : scratch.ball)
+            out.points.push_back(relative(neighbor.second, q));
           out.radius = radius;
           return;
         }
@@ -140,6 +151,16 @@ public:
   }
 
 private:
+  // Output of the ball search: each index with its squared distance to the
+  // query (an assignable functor, as the tree copies output iterators).
+  struct Collect_with_distance
+  {
+    std::vector<std::pair<double, std::size_t> >* ball;
+    const std::vector<Point>* points;
+    const Point* query;
+    void operator()(std::size_t i) const { ball->emplace_back(CGAL::squared_distance((*points)[i], *query), i); }
+  };
+
   Eigen::Vector3d relative(std::size_t i, const Point& q) const
   {
     const Point& p = m_points[i];
