@@ -52,65 +52,57 @@ inline void add_noise(Cloud& cloud, double percent, unsigned int seed)
     s.point = s.point + Vector(gauss(rng), gauss(rng), gauss(rng));
 }
 
+/// `n` samples, each set by `sample(rng, u, s)` with `u` uniform in [0, 1).
+template <typename Sample_one>
+Cloud generate(std::size_t n, unsigned int seed, Sample_one sample)
+{
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  Cloud cloud(n);
+  for(Sample& s : cloud)
+    sample(rng, u, s);
+  return cloud;
+}
+
 /// The square [-1,1]^2 of the plane z = 0.
 inline Cloud plane(std::size_t n, unsigned int seed)
 {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(-1, 1);
-  Cloud cloud(n);
-  for(Sample& s : cloud)
-  {
-    s.point = Point(u(rng), u(rng), 0);
+  return generate(n, seed, [](std::mt19937& rng, std::uniform_real_distribution<double>& u, Sample& s) {
+    s.point = Point(2 * u(rng) - 1, 2 * u(rng) - 1, 0);
     s.truth = Vector(0, 0, 1);
-  }
-  return cloud;
+  });
 }
 
 /// The unit sphere, uniformly.
 inline Cloud sphere(std::size_t n, unsigned int seed)
 {
-  std::mt19937 rng(seed);
   std::normal_distribution<double> g(0, 1);
-  Cloud cloud(n);
-  for(Sample& s : cloud)
-  {
+  return generate(n, seed, [&](std::mt19937& rng, std::uniform_real_distribution<double>&, Sample& s) {
     Vector v(g(rng), g(rng), g(rng));
     v = v / std::sqrt(v.squared_length());
     s.point = CGAL::ORIGIN + v;
     s.truth = v;
-  }
-  return cloud;
+  });
 }
 
 /// The surface of the cube [-1,1]^3, uniformly.
 inline Cloud cube(std::size_t n, unsigned int seed)
 {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(-1, 1);
-  std::uniform_int_distribution<int> face(0, 5);
-  Cloud cloud(n);
-  for(Sample& s : cloud)
-  {
-    const int f = face(rng), axis = f / 2;
-    const double side = (f % 2) ? 1. : -1.;
-    double c[3] = { u(rng), u(rng), u(rng) }, t[3] = { 0, 0, 0 };
-    c[axis] = side;
+  return generate(n, seed, [](std::mt19937& rng, std::uniform_real_distribution<double>& u, Sample& s) {
+    const int face = std::min(5, int(6 * u(rng))), axis = face / 2;
+    double c[3] = { 2 * u(rng) - 1, 2 * u(rng) - 1, 2 * u(rng) - 1 }, t[3] = { 0, 0, 0 };
+    c[axis] = (face % 2) ? 1. : -1.;
     t[axis] = 1;
     s.point = Point(c[0], c[1], c[2]);
     s.truth = Vector(t[0], t[1], t[2]);
-  }
-  return cloud;
+  });
 }
 
 /// The closed cylinder of radius 1 and height 2 (two sharp circular edges),
 /// uniformly over its area.
 inline Cloud closed_cylinder(std::size_t n, unsigned int seed)
 {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(0, 1);
-  Cloud cloud(n);
-  for(Sample& s : cloud)
-  {
+  return generate(n, seed, [](std::mt19937& rng, std::uniform_real_distribution<double>& u, Sample& s) {
     const double a = 2 * pi * u(rng);
     if(u(rng) < 2. / 3.) // lateral area 4 pi, caps 2 pi
     {
@@ -123,25 +115,19 @@ inline Cloud closed_cylinder(std::size_t n, unsigned int seed)
       s.point = Point(r * std::cos(a), r * std::sin(a), z);
       s.truth = Vector(0, 0, 1);
     }
-  }
-  return cloud;
+  });
 }
 
 /// The corner of Fig. 11: three unit squares on the planes x = 0, y = 0 and
 /// z = 0 meeting at the origin, with densities 1 : 5 : 10.
 inline Cloud anisotropic_corner(std::size_t n, unsigned int seed)
 {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(0, 1);
-  Cloud cloud(n);
-  for(Sample& s : cloud)
-  {
+  return generate(n, seed, [](std::mt19937& rng, std::uniform_real_distribution<double>& u, Sample& s) {
     const double f = u(rng) * 16, a = u(rng), b = u(rng);
     if(f < 1) { s.point = Point(0, a, b); s.truth = Vector(1, 0, 0); }      // density 1
     else if(f < 6) { s.point = Point(a, 0, b); s.truth = Vector(0, 1, 0); } // density 5
     else { s.point = Point(a, b, 0); s.truth = Vector(0, 0, 1); }           // density 10
-  }
-  return cloud;
+  });
 }
 
 /// Unoriented angle in degrees between the estimate and the truth; 90 for a
