@@ -1,11 +1,14 @@
 #!/usr/bin/env python3
-"""Draws points uniformly on the faces of CGAL's fandisk mesh.
+"""Draws points uniformly on the faces of a mesh (.off).
 
-Writes fandisk_20k.xyz (x y z) and fandisk_20k_truth.xyz (x y z nx ny nz,
-the normal of the face each point lies on) next to this script:
-    python3 make_fandisk_samples.py ../../../shared/data/meshes/fandisk.off
+    python3 make_samples.py MESH.off NAME COUNT SEED
+
+writes NAME.xyz (x y z) and NAME_truth.xyz (x y z nx ny nz, the normal of the
+face each point lies on) next to this script. The bundled files come from
+    python3 make_samples.py ../../../shared/data/meshes/fandisk.off fandisk_20k 20000 2012
+    python3 make_samples.py ../../../shared/data/meshes/anchor_dense.off anchor_15k 15000 2013
 """
-import math, os, random, sys
+import bisect, math, os, random, sys
 
 def read_off(path):
     words = open(path).read().split()
@@ -37,12 +40,12 @@ def main():
             total += area
             triangles.append((p, q, r, tuple(c / (2 * area) for c in n)))
             cumulated.append(total)
-    rng = random.Random(2012)
+    name, count, seed = sys.argv[2], int(sys.argv[3]), int(sys.argv[4])
+    rng = random.Random(seed)
     here = os.path.dirname(os.path.abspath(__file__))
-    import bisect
-    with open(os.path.join(here, "fandisk_20k.xyz"), "w") as points, \
-         open(os.path.join(here, "fandisk_20k_truth.xyz"), "w") as truth:
-        for _ in range(20000):
+    with open(os.path.join(here, name + ".xyz"), "w") as points, \
+         open(os.path.join(here, name + "_truth.xyz"), "w") as truth:
+        for _ in range(count):
             p, q, r, n = triangles[bisect.bisect_left(cumulated, rng.random() * total)]
             a, b = rng.random(), rng.random()
             if a + b > 1:
