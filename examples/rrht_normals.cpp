@@ -28,6 +28,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <string>
 #include <utility>
@@ -202,19 +203,21 @@ int main(int argc, char** argv)
     const std::string name = input.substr(input.find_last_of('/') + 1);
     output = name.substr(0, name.find_last_of('.')) + "_normals.xyz";
   }
-  const std::string sampling_name = options["sampling"].as<std::string>();
-  const std::string aggregation_name = options["aggregation"].as<std::string>();
-  const CGAL::RRHT::Sampling sampling = sampling_name == "cubes" ? CGAL::RRHT::Sampling::CUBES
-                                        : sampling_name == "unif" ? CGAL::RRHT::Sampling::UNIF
-                                                                  : CGAL::RRHT::Sampling::POINTS;
-  const CGAL::RRHT::Aggregation aggregation = aggregation_name == "mean" ? CGAL::RRHT::Aggregation::MEAN
-                                              : aggregation_name == "best" ? CGAL::RRHT::Aggregation::BEST
-                                                                           : CGAL::RRHT::Aggregation::CLUSTER;
+  // Each name is spelled once: the tables both map and validate.
+  const std::map<std::string, CGAL::RRHT::Sampling> samplings = {
+    { "points", CGAL::RRHT::Sampling::POINTS }, { "cubes", CGAL::RRHT::Sampling::CUBES }, { "unif", CGAL::RRHT::Sampling::UNIF }
+  };
+  const std::map<std::string, CGAL::RRHT::Aggregation> aggregations = {
+    { "mean", CGAL::RRHT::Aggregation::MEAN }, { "best", CGAL::RRHT::Aggregation::BEST },
+    { "cluster", CGAL::RRHT::Aggregation::CLUSTER }
+  };
+  const auto sampling = samplings.find(options["sampling"].as<std::string>());
+  const auto aggregation = aggregations.find(options["aggregation"].as<std::string>());
   std::string problem;
-  if(sampling_name != "points" && sampling_name != "cubes" && sampling_name != "unif")
-    problem = "--sampling must be points, cubes or unif, not '" + sampling_name + "'";
-  else if(aggregation_name != "mean" && aggregation_name != "best" && aggregation_name != "cluster")
-    problem = "--aggregation must be mean, best or cluster, not '" + aggregation_name + "'";
+  if(sampling == samplings.end())
+    problem = "--sampling must be points, cubes or unif, not '" + options["sampling"].as<std::string>() + "'";
+  else if(aggregation == aggregations.end())
+    problem = "--aggregation must be mean, best or cluster, not '" + options["aggregation"].as<std::string>() + "'";
   else if(!readable_extension(extension(input)))
     problem = "cannot read '" + input + "': the input must be .xyz, .pwn, .ply or .off";
   else if(extension(output) != "xyz" && extension(output) != "pwn" && extension(output) != "ply")
@@ -259,9 +262,9 @@ int main(int argc, char** argv)
               .number_of_rotations(options["rotations"].as<long long>())
               .accumulator_slices(options["slices"].as<long long>())
               .use_confidence_interval(options.count("no-confidence-interval") == 0)
-              .sampling(sampling)
+              .sampling(sampling->second)
               .presampling_factor(options["presampling"].as<long long>())
-              .aggregation(aggregation)
+              .aggregation(aggregation->second)
               .cluster_angle(options["cluster-angle"].as<double>())
               .random_seed(static_cast<unsigned int>(options["seed"].as<long long>()))
               .callback(callback);

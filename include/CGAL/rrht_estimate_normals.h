@@ -434,11 +434,13 @@ void rrht_estimate_normals(PointRange& points,
   std::vector<typename PointRange::iterator> elements;
   std::vector<RRHT::Neighbor_search::Point> cloud;
   std::vector<std::size_t> finite;
+  std::vector<char> is_finite;
   for(auto it = points.begin(); it != points.end(); ++it)
   {
     const auto& p = get(point_map, *it);
     const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y()), z = CGAL::to_double(p.z());
-    if(std::isfinite(x) && std::isfinite(y) && std::isfinite(z))
+    is_finite.push_back(std::isfinite(x) && std::isfinite(y) && std::isfinite(z));
+    if(is_finite.back())
       finite.push_back(cloud.size());
     elements.push_back(it);
     cloud.emplace_back(x, y, z);
@@ -450,10 +452,6 @@ void rrht_estimate_normals(PointRange& points,
     settings.k = static_cast<unsigned int>((std::min<std::size_t>)(k, finite.size() - 1));
   const RRHT::Neighbor_search search(cloud, finite);
   const RRHT::Cube_weights cube_weights(settings.sampling == RRHT::Sampling::CUBES ? settings.presampling_factor : 1);
-
-  std::vector<char> is_finite(size, 0);
-  for(std::size_t i : finite)
-    is_finite[i] = 1;
 
   auto process = [&](std::size_t begin, std::size_t end, RRHT::internal::Scratch& scratch) {
     for(std::size_t i = begin; i < end; ++i)
