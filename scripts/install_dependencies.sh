@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Installs, from Debian's packages, whatever the build needs and is missing.
+# Installs, from Debian's packages, whatever the build needs and is missing,
+# and the further packages given as arguments.
 set -euo pipefail
-packages=(g++ make cmake libcgal-dev libeigen3-dev libboost-dev libboost-program-options-dev libtbb-dev catch2)
+packages=(g++ make cmake libcgal-dev libeigen3-dev libboost-dev libboost-program-options-dev libtbb-dev catch2 "$@")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

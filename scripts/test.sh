@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# The tests: installs what is missing, builds in Release and runs the whole
-# suite with ctest, then builds again with AddressSanitizer and
+# The tests: installs what is missing, builds in Release (with a smoke run of
+# the benchmark) and runs the whole suite with ctest, then builds again with AddressSanitizer and
 # UndefinedBehaviorSanitizer and runs it once more (RRHT_SANITIZE=0 skips
 # that second pass).
 set -euo pipefail
@@ -16,7 +16,7 @@ run_suite() { # build folder, extra cmake arguments...
 }
 
 echo "== Release build and tests"
-run_suite "$root/build/release" -DCMAKE_BUILD_TYPE=Release
+run_suite "$root/build/release" -DCMAKE_BUILD_TYPE=Release -DCGAL_RRHT_BUILD_BENCHMARKS=ON
 if [ "${RRHT_SANITIZE:-1}" != "0" ]; then
   echo "== AddressSanitizer + UndefinedBehaviorSanitizer build and tests"
   ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \

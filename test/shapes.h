@@ -8,10 +8,13 @@
 #define CGAL_RRHT_TEST_SHAPES_H
 
 #include <CGAL/Simple_cartesian.h>
+#include <CGAL/IO/polygon_soup_io.h>
+#include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <string>
 #include <vector>
 
 namespace rrht_test {
@@ -29,14 +32,33 @@ struct Sample
 };
 typedef std::vector<Sample> Cloud;
 
+/// Property maps over `Sample`: the point an estimator reads and the normal
+/// it writes.
+struct Point_of_sample
+{
+  typedef Sample key_type;
+  typedef Point value_type;
+  typedef const Point& reference;
+  typedef boost::readable_property_map_tag category;
+  friend const Point& get(Point_of_sample, const Sample& s) { return s.point; }
+};
+
+struct Normal_of_sample
+{
+  typedef Sample key_type;
+  typedef Vector value_type;
+  typedef Vector reference;
+  typedef boost::writable_property_map_tag category;
+  friend void put(Normal_of_sample, Sample& s, const Vector& n) { s.normal = n; }
+};
+
 const double pi = 3.14159265358979323846;
 
-/// Gaussian noise of standard deviation `percent` % of the bounding-box
-/// diagonal on each coordinate (paper, Section 6).
-inline void add_noise(Cloud& cloud, double percent, unsigned int seed)
+/// The diagonal of the axis-aligned bounding box of the points.
+inline double bounding_box_diagonal(const Cloud& cloud)
 {
-  if(percent <= 0 || cloud.empty())
-    return;
+  if(cloud.empty())
+    return 0;
   double lo[3] = { 1e300, 1e300, 1e300 }, hi[3] = { -1e300, -1e300, -1e300 };
   for(const Sample& s : cloud)
     for(int d = 0; d < 3; ++d)
@@ -44,12 +66,45 @@ inline void add_noise(Cloud& cloud, double percent, unsigned int seed)
       lo[d] = (std::min)(lo[d], s.point[d]);
       hi[d] = (std::max)(hi[d], s.point[d]);
     }
-  const double diagonal = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-                                    (hi[2] - lo[2]) * (hi[2] - lo[2]));
+  return std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                   (hi[2] - lo[2]) * (hi[2] - lo[2]));
+}
+
+/// Gaussian noise of standard deviation `percent` % of the bounding-box
+/// diagonal on each coordinate (paper, Section 6).
+inline void add_noise(Cloud& cloud, double percent, unsigned int seed)
+{
+  if(percent <= 0 || cloud.empty())
+    return;
   std::mt19937 rng(seed);
-  std::normal_distribution<double> gauss(0., percent / 100. * diagonal);
+  std::normal_distribution<double> gauss(0., percent / 100. * bounding_box_diagonal(cloud));
   for(Sample& s : cloud)
     s.point = s.point + Vector(gauss(rng), gauss(rng), gauss(rng));
+}
+
+/// Appends `percent` % of outliers to the first `inliers` samples of the
+/// cloud: each is drawn uniformly in the ball of radius `radius` around a
+/// random inlier (paper, Section 6, Fig. 15). Outliers have a null truth.
+inline void add_outliers(Cloud& cloud, double percent, double radius, unsigned int seed)
+{
+  const std::size_t inliers = cloud.size(), count = std::size_t(inliers * percent / 100. + 0.5);
+  if(inliers == 0)
+    return;
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<std::size_t> pick(0, inliers - 1);
+  std::uniform_real_distribution<double> u(-1, 1);
+  cloud.reserve(inliers + count);
+  for(std::size_t i = 0; i < count; ++i)
+  {
+    Vector offset;
+    do
+      offset = Vector(u(rng), u(rng), u(rng));
+    while(offset.squared_length() > 1);
+    Sample outlier;
+    outlier.point = cloud[pick(rng)].point + radius * offset;
+    outlier.truth = CGAL::NULL_VECTOR;
+    cloud.push_back(outlier);
+  }
 }
 
 /// `n` samples, each set by `sample(rng, u, s)` with `u` uniform in [0, 1).
@@ -130,6 +185,48 @@ inline Cloud anisotropic_corner(std::size_t n, unsigned int seed)
   });
 }
 
+/// `n` points drawn uniformly over the area of a polygon mesh (faces
+/// fan-triangulated); the normal of the triangle a point is on is its truth.
+/// Returns false if the file cannot be read or has no area.
+inline bool sample_mesh(const std::string& path, std::size_t n, unsigned int seed, Cloud& cloud)
+{
+  std::vector<Point> vertices;
+  std::vector<std::vector<std::size_t> > faces;
+  if(!CGAL::IO::read_polygon_soup(path, vertices, faces))
+    return false;
+  struct Triangle { std::size_t a, b, c; };
+  std::vector<Triangle> triangles;
+  std::vector<double> cumulated_area;
+  double total = 0;
+  for(const auto& f : faces)
+    for(std::size_t i = 2; i < f.size(); ++i)
+    {
+      const Triangle t = { f[0], f[i - 1], f[i] };
+      total += std::sqrt(CGAL::cross_product(vertices[t.b] - vertices[t.a], vertices[t.c] - vertices[t.a])
+                           .squared_length()) / 2;
+      triangles.push_back(t);
+      cumulated_area.push_back(total);
+    }
+  if(!(total > 0))
+    return false;
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  cloud.assign(n, Sample());
+  for(Sample& s : cloud)
+  {
+    // upper_bound never picks a triangle of zero area.
+    const std::size_t i = std::upper_bound(cumulated_area.begin(), cumulated_area.end(), u(rng) * total) -
+                          cumulated_area.begin();
+    const Triangle& t = triangles[(std::min)(i, triangles.size() - 1)];
+    double a = u(rng), b = u(rng);
+    if(a + b > 1) { a = 1 - a; b = 1 - b; }
+    const Point &p = vertices[t.a], &q = vertices[t.b], &r = vertices[t.c];
+    s.point = p + a * (q - p) + b * (r - p);
+    s.truth = CGAL::cross_product(q - p, r - p);
+  }
+  return true;
+}
+
 /// Unoriented angle in degrees between the estimate and the truth; 90 for a
 /// null estimate.
 inline double angle_error(const Sample& s)
@@ -174,9 +271,10 @@ Errors errors(const Cloud& cloud, Keep keep, double tau = 10)
   return e;
 }
 
+/// Errors over the samples that have a truth (outliers have none).
 inline Errors errors(const Cloud& cloud, double tau = 10)
 {
-  return errors(cloud, [](const Sample&) { return true; }, tau);
+  return errors(cloud, [](const Sample& s) { return s.truth != CGAL::NULL_VECTOR; }, tau);
 }
 
 } // namespace rrht_test

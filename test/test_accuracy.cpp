@@ -8,7 +8,6 @@
 
 #include <CGAL/rrht_estimate_normals.h>
 #include <CGAL/jet_estimate_normals.h>
-#include <CGAL/IO/polygon_soup_io.h>
 
 #include <catch2/catch.hpp>
 
@@ -20,24 +19,6 @@ using namespace rrht_test;
 namespace params = CGAL::RRHT::parameters;
 
 namespace {
-
-struct Point_of_sample
-{
-  typedef Sample key_type;
-  typedef Point value_type;
-  typedef const Point& reference;
-  typedef boost::readable_property_map_tag category;
-  friend const Point& get(Point_of_sample, const Sample& s) { return s.point; }
-};
-
-struct Normal_of_sample
-{
-  typedef Sample key_type;
-  typedef Vector value_type;
-  typedef Vector reference;
-  typedef boost::writable_property_map_tag category;
-  friend void put(Normal_of_sample, Sample& s, const Vector& n) { s.normal = n; }
-};
 
 const auto maps = params::point_map(Point_of_sample()).normal_map(Normal_of_sample());
 
@@ -142,29 +123,8 @@ TEST_CASE("Fandisk mesh from the shared data: RRHT beats jet fitting near sharp 
     WARN("skipped: " << path << " not found");
     return;
   }
-  std::vector<Point> vertices;
-  std::vector<std::vector<std::size_t> > faces;
-  REQUIRE(CGAL::IO::read_polygon_soup(path, vertices, faces));
-  std::vector<double> cumulated_area;
-  double total = 0;
-  for(const auto& f : faces)
-  {
-    REQUIRE(f.size() == 3);
-    total += std::sqrt(CGAL::cross_product(vertices[f[1]] - vertices[f[0]], vertices[f[2]] - vertices[f[0]]).squared_length()) / 2;
-    cumulated_area.push_back(total);
-  }
-  std::mt19937 rng(16);
-  std::uniform_real_distribution<double> u(0, 1);
-  Cloud cloud(30000);
-  for(Sample& s : cloud)
-  {
-    const auto& f = faces[std::lower_bound(cumulated_area.begin(), cumulated_area.end(), u(rng) * total) - cumulated_area.begin()];
-    double a = u(rng), b = u(rng);
-    if(a + b > 1) { a = 1 - a; b = 1 - b; }
-    const Point &p = vertices[f[0]], &q = vertices[f[1]], &r = vertices[f[2]];
-    s.point = p + a * (q - p) + b * (r - p);
-    s.truth = CGAL::cross_product(q - p, r - p);
-  }
+  Cloud cloud;
+  REQUIRE(sample_mesh(path, 30000, 16, cloud));
   add_noise(cloud, 0.1, 17);
   const Errors r = rrht(cloud, 100);
   const Errors j = jet(cloud);

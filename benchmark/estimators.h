@@ -1,0 +1,194 @@
+// Copyright (c) 2026 The CGAL RRHT authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The normal estimators the benchmark compares, each behind the same
+// `Estimate` signature: RRHT (this package), CGAL's jet fitting, PCA and
+// VCM, and PCL's NormalEstimationOMP when PCL was found at configure time.
+
+#ifndef CGAL_RRHT_BENCHMARK_ESTIMATORS_H
+#define CGAL_RRHT_BENCHMARK_ESTIMATORS_H
+
+#include "measure.h"
+
+#include <CGAL/rrht_estimate_normals.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/compute_average_spacing.h>
+#include <CGAL/jet_estimate_normals.h>
+#include <CGAL/pca_estimate_normals.h>
+#include <CGAL/vcm_estimate_normals.h>
+
+#include <string>
+
+namespace rrht_benchmark {
+
+/// A named estimator; `parallel` is false for those that use one thread
+/// whatever TBB allows (VCM), which are then measured with 1 thread only.
+struct Estimator
+{
+  std::string name;
+  Estimate estimate;
+  bool parallel = true;
+  int planes = 0, rotations = 0; // RRHT's T and n_rot, 0 for the others
+};
+
+/// The neighborhood of every estimator: the `k` nearest points, or the ball
+/// of radius `radius` if `radius > 0` (CGAL's `neighbor_radius` semantics).
+struct Neighborhood
+{
+  unsigned int k = 100;
+  double radius = 0;
+  std::string suffix() const { return radius > 0 ? "_r" : "_K" + std::to_string(k); }
+};
+
+inline auto sample_maps() { return CGAL::RRHT::parameters::point_map(Point_of_sample()).normal_map(Normal_of_sample()); }
+
+/// RRHT settings of the paper's Section 6.
+struct Rrht_setting
+{
+  CGAL::RRHT::Sampling sampling = CGAL::RRHT::Sampling::POINTS;
+  CGAL::RRHT::Aggregation aggregation = CGAL::RRHT::Aggregation::CLUSTER;
+  int planes = 700;     // T_R
+  int rotations = 5;    // n_rot
+  bool confidence_interval = true;
+  std::string label;    // appended to the name, e.g. "_fast"
+
+  /// T_R = 700, n_rot = 5: the paper's precise setting (Fig. 10, Table 1).
+  static Rrht_setting precise(CGAL::RRHT::Sampling s = CGAL::RRHT::Sampling::POINTS,
+                              CGAL::RRHT::Aggregation a = CGAL::RRHT::Aggregation::CLUSTER)
+  {
+    Rrht_setting r;
+    r.sampling = s;
+    r.aggregation = a;
+    return r;
+  }
+  /// T_R = 300, n_rot = 2: the paper's fast setting (Fig. 10, Table 1).
+  static Rrht_setting fast(CGAL::RRHT::Sampling s = CGAL::RRHT::Sampling::POINTS)
+  {
+    Rrht_setting r = precise(s);
+    r.planes = 300;
+    r.rotations = 2;
+    r.label = "_fast";
+    return r;
+  }
+  Rrht_setting without_confidence_interval() const
+  {
+    Rrht_setting r = *this;
+    r.confidence_interval = false;
+    r.label += "_noCI";
+    return r;
+  }
+};
+
+/// "RRHT_Cubes_c_fast": sampling, aggregation (m, b, c as in the paper), setting.
+inline std::string rrht_name(const Rrht_setting& s)
+{
+  static const char* samplings[] = { "Points", "Cubes", "Unif" };
+  static const char* aggregations[] = { "m", "b", "c" };
+  return std::string("RRHT_") + samplings[int(s.sampling)] + "_" + aggregations[int(s.aggregation)] + s.label;
+}
+
+inline Estimator rrht(const Rrht_setting& s, const Neighborhood& n)
+{
+  Estimator e;
+  e.name = rrht_name(s);
+  e.planes = s.planes;
+  e.rotations = s.rotations;
+  e.estimate = [s, n](Cloud& cloud, unsigned int) {
+    CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(
+      cloud, n.k,
+      sample_maps()
+        .neighbor_radius(n.radius)
+        .sampling(s.sampling)
+        .aggregation(s.aggregation)
+        .number_of_planes(s.planes)
+        .number_of_rotations(s.rotations)
+        .use_confidence_interval(s.confidence_interval));
+  };
+  return e;
+}
+
+/// CGAL::jet_estimate_normals, default degrees (fitting 2, monge 2).
+inline Estimator jet(const Neighborhood& n)
+{
+  Estimator e;
+  e.name = "jet" + n.suffix();
+  e.estimate = [n](Cloud& cloud, unsigned int) {
+    CGAL::jet_estimate_normals<CGAL::Parallel_if_available_tag>(cloud, n.k, sample_maps().neighbor_radius(n.radius));
+  };
+  return e;
+}
+
+inline Estimator pca(const Neighborhood& n)
+{
+  Estimator e;
+  e.name = "pca" + n.suffix();
+  e.estimate = [n](Cloud& cloud, unsigned int) {
+    CGAL::pca_estimate_normals<CGAL::Parallel_if_available_tag>(cloud, n.k, sample_maps().neighbor_radius(n.radius));
+  };
+  return e;
+}
+
+namespace internal {
+// VCM intersects convex polyhedra, which needs robust predicates: it runs on
+// EPICK points (with Simple_cartesian<double> CGAL's quickhull crashes).
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
+
+struct Epick_point_of_sample
+{
+  typedef Sample key_type;
+  typedef Epick::Point_3 value_type;
+  typedef Epick::Point_3 reference;
+  typedef boost::readable_property_map_tag category;
+  friend Epick::Point_3 get(Epick_point_of_sample, const Sample& s)
+  {
+    return Epick::Point_3(s.point.x(), s.point.y(), s.point.z());
+  }
+};
+
+struct Epick_normal_of_sample
+{
+  typedef Sample key_type;
+  typedef Epick::Vector_3 value_type;
+  typedef Epick::Vector_3 reference;
+  typedef boost::writable_property_map_tag category;
+  friend void put(Epick_normal_of_sample, Sample& s, const Epick::Vector_3& n) { s.normal = Vector(n.x(), n.y(), n.z()); }
+};
+} // namespace internal
+
+/// CGAL::vcm_estimate_normals (sequential: a Delaunay triangulation of the
+/// whole cloud, with EPICK). The offset radius R is the average distance to
+/// the `k` nearest neighbors (80: the scale of the others' neighborhoods), the
+/// convolution radius the average distance to the 18 nearest, both computed
+/// inside the timed call. (CGAL 5.5.1's variant that convolves over k
+/// neighbors instead gives errors near 90 degrees everywhere; not used.)
+inline Estimator vcm(const Neighborhood& n)
+{
+  Estimator e;
+  e.name = "vcm";
+  e.parallel = false;
+  e.estimate = [n](Cloud& cloud, unsigned int) {
+    const auto maps = CGAL::parameters::point_map(internal::Epick_point_of_sample())
+                        .normal_map(internal::Epick_normal_of_sample());
+    const double offset_radius = CGAL::compute_average_spacing<CGAL::Sequential_tag>(cloud, n.k, maps);
+    const double convolution_radius = CGAL::compute_average_spacing<CGAL::Sequential_tag>(cloud, 18, maps);
+    CGAL::vcm_estimate_normals(cloud, offset_radius, convolution_radius, maps);
+  };
+  return e;
+}
+
+#ifdef RRHT_BENCHMARK_WITH_PCL
+/// pcl::NormalEstimationOMP with the k nearest neighbors (pcl_peer.cpp).
+void pcl_estimate_normals(Cloud& cloud, unsigned int k, double radius, unsigned int threads);
+
+inline Estimator pcl(const Neighborhood& n)
+{
+  Estimator e;
+  e.name = "pcl" + n.suffix();
+  e.estimate = [n](Cloud& cloud, unsigned int threads) { pcl_estimate_normals(cloud, n.k, n.radius, threads); };
+  return e;
+}
+#endif
+
+} // namespace rrht_benchmark
+
+#endif // CGAL_RRHT_BENCHMARK_ESTIMATORS_H

@@ -1,0 +1,406 @@
+#!/usr/bin/python3
+# Copyright (c) 2026 The CGAL RRHT authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Turns the CSV files of rrht_benchmark into Markdown tables, plots and
+renderings of the error (the paper's Fig. 8 and 11).
+
+    report.py RESULTS_DIR [--scratch DIR]
+
+RESULTS_DIR holds the CSV files and machine.txt (written by
+scripts/benchmark.sh); DIR holds the per-point error files. Needs Debian's
+python3-matplotlib.
+"""
+
+import argparse
+import csv
+import math
+import os
+from collections import OrderedDict, defaultdict
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+REFERENCE = "jet_K80"  # the paper's and CGAL's usual competitor
+TAU = 10.0
+
+
+def read(path):
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    for r in rows:
+        for key in ("points", "outliers", "planes", "rotations", "threads", "runs", "null_normals"):
+            r[key] = int(r[key])
+        for key in ("noise_percent", "outliers_percent", "median_s", "min_s", "max_s", "peak_mib", "rms_deg",
+                    "rms10_deg", "above10_percent"):
+            r[key] = float(r[key])
+    return rows
+
+
+def has_truth(row):
+    return not row["experiment"] == "real_scans"
+
+
+def group_key(r):
+    return (r["dataset"], r["points"], r["outliers"], r["noise_percent"], r["outliers_percent"])
+
+
+def describe(key):
+    dataset, points, outliers, noise, outliers_percent = key
+    text = "%s, %d points, %g%% noise" % (dataset, points, noise)
+    if outliers:
+        text += ", +%g%% outliers (%d)" % (outliers_percent, outliers)
+    return text
+
+
+def fmt_time(s):
+    return "%.3f" % s if s < 10 else "%.1f" % s
+
+
+def table(rows, with_errors=True):
+    """One Markdown table per dataset group: estimators as rows, times per
+    thread count, ratios to jet_K80 of the same run, errors, memory."""
+    groups = OrderedDict()
+    for r in rows:
+        groups.setdefault(group_key(r), []).append(r)
+    out = []
+    for key, members in groups.items():
+        threads = sorted({r["threads"] for r in members})
+        top = threads[-1]
+        by_estimator = OrderedDict()
+        for r in members:
+            by_estimator.setdefault(r["estimator"], {})[r["threads"]] = r
+        reference = by_estimator.get(REFERENCE, {})
+        header = ["estimator"] + ["time %dt (s)" % t for t in threads]
+        header += ["time ÷ jet_K80 (%dt)" % top]
+        if with_errors:
+            header += ["RMS (°)", "RMS_10 (°)", "RMS_10 ÷ jet_K80", "> 10° (%)"]
+        header += ["peak memory (MiB)", "null normals"]
+        out.append("\n**%s**\n" % describe(key))
+        out.append("| " + " | ".join(header) + " |")
+        out.append("|" + "---|" * len(header))
+        for name, per_thread in by_estimator.items():
+            any_row = next(iter(per_thread.values()))
+            cells = [("**%s**" % name) if name.startswith("RRHT") else name]
+            for t in threads:
+                r = per_thread.get(t)
+                cells.append("—" if r is None else (fmt_time(r["median_s"]) if r["status"] == "ok" else r["status"]))
+            mine = per_thread.get(top) or any_row
+            ref = reference.get(mine["threads"])
+            ok = mine["status"] == "ok" and ref is not None and ref["status"] == "ok" and ref["median_s"] > 0
+            cells.append("%.2f×" % (mine["median_s"] / ref["median_s"]) if ok else "—")
+            scored = [r for r in per_thread.values() if r["status"] == "ok"]
+            if with_errors and scored:
+                r = scored[0]
+                cells += ["%.2f" % r["rms_deg"], "%.2f" % r["rms10_deg"]]
+                cells.append("%.2f" % (r["rms10_deg"] / ref["rms10_deg"])
+                             if ref is not None and ref["status"] == "ok" and ref["rms10_deg"] > 0 else "—")
+                cells.append("%.2f" % r["above10_percent"])
+            elif with_errors:
+                cells += ["—"] * 4
+            cells += ["%.1f" % max(r["peak_mib"] for r in scored) if scored else "—",
+                      str(scored[0]["null_normals"]) if scored else "—"]
+            out.append("| " + " | ".join(cells) + " |")
+    return "\n".join(out) + "\n"
+
+
+TITLES = {
+    "headline": "Headline: RRHT against jet fitting, PCA, VCM (and PCL) on shapes with sharp edges",
+    "fig6_time_vs_points": "Fig. 6: time against the number of points (sphere, 0.2% noise, no confidence interval)",
+    "fig7_confidence_interval": "Fig. 7: effect of the confidence-interval stop (eq. 10) against noise",
+    "fig9_noise": "Fig. 9: error against noise on the closed cylinder",
+    "fig10_precision_vs_time": "Fig. 10: precision against time over T_R and n_rot (noisy cube)",
+    "fig13_anisotropy": "Fig. 11 and 13: the corner with densities 1:5:10",
+    "fig15_outliers": "Fig. 15: outliers drawn within 3% of the bounding-box diagonal",
+    "real_meshes": "Real meshes (../shared/data/meshes), sampled, the face normal as truth",
+    "real_points": "Point sets with given normals (../shared/data/points)",
+    "real_scans": "Real scans without normals (../shared/data/scans): time and memory",
+}
+
+COLORS = {"Points": "tab:blue", "Cubes": "tab:orange", "Unif": "tab:green", "jet_K80": "black",
+          "jet_K18": "dimgray", "pca_K80": "tab:purple", "vcm": "tab:brown", "pcl_K80": "tab:pink"}
+STYLES = {"m": "--", "b": ":", "c": "-"}
+
+
+def style(name):
+    """Color by sampling, line style by aggregation as in the paper's plots."""
+    if name.startswith("RRHT_"):
+        parts = name.split("_")
+        return dict(color=COLORS.get(parts[1], "tab:red"), linestyle=STYLES.get(parts[2], "-"), marker="o")
+    return dict(color=COLORS.get(name, "tab:gray"), linestyle="-.", marker="s")
+
+
+def best_threads(rows):
+    return max(r["threads"] for r in rows)
+
+
+def series(rows, x, y, threads=None):
+    """{estimator: [(x, y)]} over successful rows with the given thread count
+    (sequential estimators have only 1)."""
+    lines = defaultdict(list)
+    for r in rows:
+        if r["status"] != "ok":
+            continue
+        if threads is not None and r["threads"] != threads:
+            has_other = any(o["estimator"] == r["estimator"] and o["threads"] == threads for o in rows)
+            if has_other:
+                continue
+        lines[r["estimator"]].append((x(r), y(r)))
+    return {k: sorted(set(v)) for k, v in lines.items()}
+
+
+def plot_lines(ax, lines, label_suffix=""):
+    for name, points in lines.items():
+        xs, ys = zip(*points)
+        ax.plot(xs, ys, label=name + label_suffix, markersize=3, **style(name))
+
+
+def save(fig, path):
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return os.path.basename(path)
+
+
+def plot_fig6(rows, out):
+    t = best_threads(rows)
+    fig, ax = plt.subplots(figsize=(7, 5))
+    plot_lines(ax, series(rows, lambda r: r["points"], lambda r: r["median_s"], t))
+    points = series(rows, lambda r: r["points"], lambda r: r["median_s"], t).get("RRHT_Points_c_noCI")
+    if points and len(points) > 1:
+        n0, t0 = points[-1]
+        xs = [p[0] for p in points]
+        ax.plot(xs, [t0 * n * math.log(n) / (n0 * math.log(n0)) for n in xs], color="gray", linewidth=0.8,
+                label="n log n through RRHT_Points")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("number of points")
+    ax.set_ylabel("time (s), %d threads (VCM: 1)" % t)
+    ax.set_title("Sphere, 0.2% noise, no confidence interval")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=7)
+    return [save(fig, os.path.join(out, "fig6_time_vs_points.png"))]
+
+
+def plot_fig7(rows, out):
+    t = best_threads(rows)
+    times = {}
+    for r in rows:
+        if r["status"] == "ok" and r["threads"] == t:
+            times[(r["dataset"], r["noise_percent"], r["estimator"])] = r["median_s"]
+    fig, ax = plt.subplots(figsize=(7, 5))
+    lines = []
+    for dataset, color in (("sphere", "tab:blue"), ("cube", "tab:orange"), ("cylinder", "tab:green")):
+        for setting, dash in (("RRHT_Points_c", "-"), ("RRHT_Points_c_fast", "--")):
+            xs, ys = [], []
+            for noise in sorted({k[1] for k in times if k[0] == dataset}):
+                on, off = times.get((dataset, noise, setting)), times.get((dataset, noise, setting + "_noCI"))
+                if on and off:
+                    xs.append(noise)
+                    ys.append(on / off)
+                    lines.append((dataset, setting, noise, on, off))
+            if xs:
+                ax.plot(xs, ys, dash, color=color, marker="o", markersize=3, label="%s, %s" % (dataset, setting))
+    ax.axhline(1, color="gray", linewidth=0.8)
+    ax.set_xlabel("noise (% of the bounding-box diagonal)")
+    ax.set_ylabel("time with ÷ time without the confidence interval (%d threads)" % t)
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=7)
+    md = ["\n| dataset | setting | noise (%) | with CI (s) | without CI (s) | ratio |", "|---|---|---|---|---|---|"]
+    for dataset, setting, noise, on, off in lines:
+        md.append("| %s | %s | %g | %s | %s | %.2f |" % (dataset, setting, noise, fmt_time(on), fmt_time(off), on / off))
+    return [save(fig, os.path.join(out, "fig7_confidence_interval.png"))], "\n".join(md) + "\n"
+
+
+def plot_error_vs(rows, out, name, x, xlabel, title, keep=lambda r: True, split_by_dataset=False):
+    datasets = sorted({r["dataset"] for r in rows}) if split_by_dataset else [None]
+    fig, axes = plt.subplots(len(datasets), 2, figsize=(11, 4.5 * len(datasets)), squeeze=False)
+    for i, dataset in enumerate(datasets):
+        subset = [r for r in rows if keep(r) and (dataset is None or r["dataset"] == dataset)]
+        t = best_threads(subset)
+        for j, (measure, label) in enumerate((("rms_deg", "RMS (°)"), ("rms10_deg", "RMS_10 (°)"))):
+            ax = axes[i][j]
+            plot_lines(ax, series(subset, x, lambda r, m=measure: r[m], t))
+            ax.set_xlabel(xlabel)
+            ax.set_ylabel(label)
+            ax.set_title(title + ("" if dataset is None else " — " + dataset), fontsize=9)
+            ax.grid(True, alpha=0.3)
+        axes[i][1].legend(fontsize=6)
+    return [save(fig, os.path.join(out, name + ".png"))]
+
+
+def plot_fig10(rows, out):
+    t = best_threads(rows)
+    ok = [r for r in rows if r["status"] == "ok" and r["threads"] == t]
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
+    for ax, measure, label in ((axes[0], "rms_deg", "RMS (°)"), (axes[1], "rms10_deg", "RMS_10 (°)")):
+        for fixed, vary, dash, text in (("rotations", "planes", "-", "n_rot = 5, T_R varies"),
+                                        ("planes", "rotations", "--", "T_R = 700, n_rot varies")):
+            value = 5 if fixed == "rotations" else 700
+            line = sorted((r[vary], r["median_s"], r[measure]) for r in ok
+                          if r["estimator"].startswith("RRHT") and r[fixed] == value)
+            if line:
+                ax.plot([p[1] for p in line], [p[2] for p in line], dash, marker="o", markersize=3, label=text)
+        for r in ok:
+            if r["estimator"].startswith("RRHT") and (r["planes"], r["rotations"]) in ((700, 5), (300, 2)):
+                ax.annotate("T_R=%d, n_rot=%d" % (r["planes"], r["rotations"]), (r["median_s"], r[measure]),
+                            fontsize=7, xytext=(5, 5), textcoords="offset points")
+            if r["estimator"] == REFERENCE:
+                ax.plot([r["median_s"]], [r[measure]], "ks", label=REFERENCE)
+        ax.set_xlabel("time (s), %d threads" % t)
+        ax.set_ylabel(label)
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=7)
+    return [save(fig, os.path.join(out, "fig10_precision_vs_time.png"))]
+
+
+# --- Renderings of the error (Fig. 8 and 11) ---------------------------------
+
+def error_color(e):
+    """Blue to green from 0 to 10 degrees, red above (the paper's Fig. 8)."""
+    if e > TAU:
+        return (0.85, 0.1, 0.1)
+    s = e / TAU
+    return (0.0, s, 1.0 - s)
+
+
+def load_errors(path):
+    data = []
+    with open(path) as f:
+        for line in f:
+            v = [float(x) for x in line.split()]
+            if len(v) == 7:
+                data.append(v)
+    return data
+
+
+VIEWS = {"cube": (1.0, 0.7, 0.5), "cylinder": (1.0, 0.4, 0.6), "fandisk": (1.0, -0.6, 0.7),
+         "corner": (1.0, 1.0, 1.0)}
+
+
+def render(ax, data, dataset, title):
+    """Orthographic view; points whose surface faces away are culled, the
+    rest drawn far to near."""
+    d = VIEWS.get(dataset, (1.0, 0.7, 0.5))
+    norm = math.sqrt(sum(c * c for c in d))
+    d = [c / norm for c in d]
+    up = (0.0, 0.0, 1.0)
+    right = (up[1] * d[2] - up[2] * d[1], up[2] * d[0] - up[0] * d[2], up[0] * d[1] - up[1] * d[0])
+    rn = math.sqrt(sum(c * c for c in right))
+    right = [c / rn for c in right]
+    up2 = (d[1] * right[2] - d[2] * right[1], d[2] * right[0] - d[0] * right[2], d[0] * right[1] - d[1] * right[0])
+    n = len(data)
+    centre = [sum(p[i] for p in data) / n for i in range(3)]
+
+    def outward(p):
+        t = p[3:6]
+        # Synthetic shapes have unoriented truths: orient them away from the centre
+        # (they are convex); meshes keep the orientation of their faces.
+        if dataset in ("cube", "cylinder", "sphere"):
+            if sum((p[i] - centre[i]) * t[i] for i in range(3)) < 0:
+                t = [-c for c in t]
+        return t
+
+    orientation = 1.0
+    if dataset not in ("cube", "cylinder", "sphere", "corner"):
+        s = sum(sum((p[i] - centre[i]) * p[3 + i] for i in range(3)) for p in data)
+        orientation = 1.0 if s >= 0 else -1.0
+    visible = []
+    for p in data:
+        t = outward(p)
+        if orientation * sum(t[i] * d[i] for i in range(3)) > 0 or dataset == "corner":
+            visible.append((sum(p[i] * d[i] for i in range(3)), sum(p[i] * right[i] for i in range(3)),
+                            sum(p[i] * up2[i] for i in range(3)), p[6]))
+    visible.sort()
+    size = min(8.0, max(1.0, 25000.0 / max(1, len(visible))))  # dense enough to read as a surface
+    ax.scatter([v[1] for v in visible], [v[2] for v in visible], c=[error_color(v[3]) for v in visible],
+               s=size, linewidths=0)
+    ax.set_aspect("equal")
+    ax.axis("off")
+    bad = sum(1 for p in data if p[6] > TAU)
+    ax.set_title("%s\n%.1f%% above 10°" % (title, 100.0 * bad / max(1, len(data))), fontsize=9)
+
+
+def renderings(scratch, out):
+    made = []
+    for dataset in ("cube", "cylinder", "fandisk"):
+        panels = [(name, os.path.join(scratch, "%s_%s.txt" % (dataset, name))) for name in ("RRHT_Points_c", REFERENCE)]
+        panels = [(n, p) for n, p in panels if os.path.exists(p)]
+        if len(panels) < 2:
+            continue
+        fig, axes = plt.subplots(1, len(panels), figsize=(5 * len(panels), 5))
+        for ax, (name, path) in zip(axes, panels):
+            render(ax, load_errors(path), dataset, name)
+        fig.suptitle("%s: angle error, blue→green 0–10°, red above 10° (Fig. 8)" % dataset, fontsize=10)
+        made.append(save(fig, os.path.join(out, "fig8_%s.png" % dataset)))
+    names = ["RRHT_Points_c", "RRHT_Cubes_c", "RRHT_Unif_c", REFERENCE]
+    panels = [(n, os.path.join(scratch, "corner_%s.txt" % n)) for n in names]
+    panels = [(n, p) for n, p in panels if os.path.exists(p)]
+    if panels:
+        fig, axes = plt.subplots(1, len(panels), figsize=(4 * len(panels), 4.4), squeeze=False)
+        for ax, (name, path) in zip(axes[0], panels):
+            render(ax, load_errors(path), "corner", name)
+        fig.suptitle("Corner, densities 1:5:10, 0.2% noise (Fig. 11)", fontsize=10)
+        made.append(save(fig, os.path.join(out, "fig11_corner.png")))
+    return made
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("results")
+    parser.add_argument("--scratch", default=None, help="folder of the per-point error files")
+    args = parser.parse_args()
+    out = args.results
+    experiments = OrderedDict()
+    for name in TITLES:
+        path = os.path.join(out, name + ".csv")
+        if os.path.exists(path):
+            experiments[name] = read(path)
+    machine = ""
+    if os.path.exists(os.path.join(out, "machine.txt")):
+        with open(os.path.join(out, "machine.txt")) as f:
+            machine = f.read().strip()
+
+    index = ["# Benchmark results\n", machine + "\n" if machine else "",
+             "Times are medians over the runs given in each CSV (column `runs`); ratios are taken within this run. "
+             "RMS and RMS_10 are in degrees (paper, §6: errors above 10° count as 90° in RMS_10). "
+             "Peak memory is the resident memory a measurement adds above its input (see benchmark/measure.h).\n"]
+    rendered = renderings(args.scratch, out) if args.scratch else []
+    for name, rows in experiments.items():
+        md = ["# " + TITLES[name] + "\n", machine + "\n" if machine else ""]
+        images = []
+        extra = ""
+        if name == "fig6_time_vs_points":
+            images = plot_fig6(rows, out)
+        elif name == "fig7_confidence_interval":
+            images, extra = plot_fig7(rows, out)
+        elif name == "fig9_noise":
+            images = plot_error_vs(rows, out, name, lambda r: r["noise_percent"], "noise (%)",
+                                   "Closed cylinder")
+        elif name == "fig10_precision_vs_time":
+            images = plot_fig10(rows, out)
+        elif name == "fig13_anisotropy":
+            images = plot_error_vs(rows, out, name, lambda r: r["noise_percent"], "noise (%)",
+                                   "Corner 1:5:10")
+        elif name == "fig15_outliers":
+            images = plot_error_vs(rows, out, name, lambda r: r["outliers_percent"], "outliers (% of the points)",
+                                   "0.2% noise", split_by_dataset=True)
+        elif name == "headline":
+            images = [i for i in rendered if i.startswith("fig8")]
+        if name == "fig13_anisotropy":
+            images += [i for i in rendered if i.startswith("fig11")]
+        for image in images:
+            md.append("![%s](%s)\n" % (image, image))
+        md.append(extra)
+        md.append(table(rows, with_errors=has_truth(rows[0])))
+        with open(os.path.join(out, name + ".md"), "w") as f:
+            f.write("\n".join(md))
+        index.append("- [%s](%s.md)" % (TITLES[name], name))
+    with open(os.path.join(out, "README.md"), "w") as f:
+        f.write("\n".join(index) + "\n")
+    print("report written to %s" % out)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,20 @@
+# ctest benchmark_smoke: the benchmark runs one small experiment end to end
+# and writes a CSV with a measured row for RRHT and for jet fitting.
+file(REMOVE_RECURSE ${OUT})
+file(MAKE_DIRECTORY ${OUT})
+execute_process(COMMAND ${BENCHMARK} --only fig10 --runs 1 --threads 1 --out ${OUT} --scratch ${OUT}
+                RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "rrht_benchmark exited with ${rc}")
+endif()
+file(STRINGS ${OUT}/fig10_precision_vs_time.csv rows)
+list(LENGTH rows count)
+if(count LESS 3)
+  message(FATAL_ERROR "fig10_precision_vs_time.csv has ${count} lines")
+endif()
+foreach(name RRHT_Points_c_T700_rot5 jet_K80)
+  string(REGEX MATCH "cube,10000,0,0.2,0,${name},[^\n]*,ok" row "${rows}")
+  if(NOT row)
+    message(FATAL_ERROR "no successful row for ${name} in fig10_precision_vs_time.csv")
+  endif()
+endforeach()

@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# The comparison benchmark (benchmark/README.md): installs what is missing,
+# builds it optimized, runs it and writes CSV, Markdown tables, plots and
+# renderings to benchmark/results/MODE.
+#
+#   bash scripts/benchmark.sh [quick|full] [more rrht_benchmark options]
+#
+# quick takes minutes, full hours. PCL is compared too when Debian's
+# libpcl-dev is installed (RRHT_BENCHMARK_PCL=1 installs it).
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+mode=${1:-quick}
+shift || true
+case "$mode" in quick|full) ;; *) echo "usage: $0 [quick|full] [rrht_benchmark options]" >&2; exit 1 ;; esac
+
+extra=(python3-matplotlib)
+[ "${RRHT_BENCHMARK_PCL:-0}" = 1 ] && extra+=(libpcl-dev)
+bash "$root/scripts/install_dependencies.sh" "${extra[@]}"
+
+build="$root/build/benchmark"
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCGAL_RRHT_BUILD_BENCHMARKS=ON \
+      -DCGAL_RRHT_BUILD_TESTS=OFF -DCGAL_RRHT_BUILD_EXAMPLES=OFF > /dev/null
+cmake --build "$build" -j"$(nproc)" --target rrht_benchmark
+
+out="$root/benchmark/results/$mode"
+scratch="$build/errors-$mode"
+rm -rf "$out" "$scratch"
+mkdir -p "$out" "$scratch"
+{
+  echo "Command: \`bash scripts/benchmark.sh $mode${*:+ $*}\` at commit $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown), $(date -u '+%Y-%m-%d %H:%M UTC')."
+  echo "Machine: $(lscpu | sed -n 's/^Model name: *//p' | head -1), $(nproc) cores, $(free -g | awk '/^Mem:/ {print $2}') GiB;" \
+       "$(g++ --version | head -1); CGAL $(dpkg-query -W -f='${Version}' libcgal-dev);" \
+       "PCL: $(dpkg-query -W -f='${Version}' libpcl-dev 2>/dev/null || echo 'not installed')."
+} > "$out/machine.txt"
+"$build/benchmark/rrht_benchmark" --mode "$mode" --out "$out" --scratch "$scratch" \
+    --data "$root/../shared/data" "$@" | tee "$build/benchmark-$mode.log"
+/usr/bin/python3 "$root/benchmark/report.py" "$out" --scratch "$scratch"
+echo "Results: $out/README.md"
