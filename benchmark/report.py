@@ -346,6 +346,27 @@ def renderings(scratch, out):
     return made
 
 
+def summary(rows):
+    """The compact headline table the top-level README quotes."""
+    out = ["| data | estimator | > 10° (%) | RMS_10 (°) | time 1 thread (s) | time 2 threads (s) | time ÷ jet_K80 (2 threads) | peak memory (MiB) |",
+           "|---|---|---|---|---|---|---|---|"]
+    cell = {(r["dataset"], r["estimator"], r["threads"]): r for r in rows if r["status"] == "ok"}
+    for key in OrderedDict((group_key(r), 0) for r in rows):
+        members = OrderedDict((r["estimator"], 0) for r in rows if group_key(r) == key)
+        ref = cell.get((key[0], REFERENCE, 2))
+        for name in members:
+            one, two = cell.get((key[0], name, 1)), cell.get((key[0], name, 2))
+            any_row = one or two
+            if any_row is None:
+                continue
+            ratio = "%.2f×" % (two["median_s"] / ref["median_s"]) if two and ref else "—"
+            out.append("| %s (%dk) | %s | %.1f | %.1f | %s | %s | %s | %.1f |" % (
+                key[0], key[1] // 1000, ("**%s**" % name) if name.startswith("RRHT") else name,
+                any_row["above10_percent"], any_row["rms10_deg"], fmt_time(one["median_s"]) if one else "—",
+                fmt_time(two["median_s"]) if two else "—", ratio, any_row["peak_mib"]))
+    return "\n".join(out) + "\n"
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("results")
@@ -394,6 +415,9 @@ def main():
             md.append("![%s](%s)\n" % (image, image))
         md.append(extra)
         md.append(table(rows, with_errors=has_truth(rows[0])))
+        if name == "headline":
+            with open(os.path.join(out, "headline_summary.md"), "w") as f:
+                f.write(summary(rows))
         with open(os.path.join(out, name + ".md"), "w") as f:
             f.write("\n".join(md))
         index.append("- [%s](%s.md)" % (TITLES[name], name))

@@ -22,12 +22,13 @@ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCGAL_RRHT_BUILD_BENCHM
       -DCGAL_RRHT_BUILD_TESTS=OFF -DCGAL_RRHT_BUILD_EXAMPLES=OFF > /dev/null
 cmake --build "$build" -j"$(nproc)" --target rrht_benchmark
 
+commit=$(git -C "$root" describe --always --dirty 2>/dev/null || echo unknown) # before the old results go
 out="$root/benchmark/results/$mode"
 scratch="$build/errors-$mode"
 rm -rf "$out" "$scratch"
 mkdir -p "$out" "$scratch"
 {
-  echo "Command: \`bash scripts/benchmark.sh $mode${*:+ $*}\` at commit $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown), $(date -u '+%Y-%m-%d %H:%M UTC')."
+  echo "Command: \`bash scripts/benchmark.sh $mode${*:+ $*}\` at commit $commit, $(date -u '+%Y-%m-%d %H:%M UTC')."
   echo "Machine: $(lscpu | sed -n 's/^Model name: *//p' | head -1), $(nproc) cores, $(free -g | awk '/^Mem:/ {print $2}') GiB;" \
        "$(g++ --version | head -1); CGAL $(dpkg-query -W -f='${Version}' libcgal-dev);" \
        "PCL: $(dpkg-query -W -f='${Version}' libpcl-dev 2>/dev/null || echo 'not installed')."
