@@ -104,13 +104,12 @@ private:
 
 /// jet fitting (K = 80 and CGAL's usual K = 18), PCA and VCM (K = 80), and
 /// PCL (K = 80) when built with it.
-std::vector<Estimator> peers(const Config& config)
+std::vector<Estimator> peers()
 {
   std::vector<Estimator> p = { jet(paper_k), jet(small_k), pca(paper_k), vcm(paper_k) };
 #ifdef RRHT_BENCHMARK_WITH_PCL
   p.push_back(pcl(paper_k));
 #endif
-  (void)config;
   return p;
 }
 
@@ -137,7 +136,7 @@ void headline(const Config& config)
     x.run(d, rrht(Rrht_setting::precise(Sampling::CUBES), rrht_k), config.headline_threads);
     if(config.full) // RRHT_Unif is 10x RRHT_Points: quick mode has it in fig13 only
       x.run(d, rrht(Rrht_setting::precise(Sampling::UNIF), rrht_k), config.headline_threads);
-    for(const Estimator& e : peers(config))
+    for(const Estimator& e : peers())
       x.run(d, e, config.headline_threads, e.name == "jet_K80" ? d.name + "_jet_K80.txt" : std::string());
   }
 }
@@ -205,7 +204,7 @@ void fig9(const Config& config)
       for(Aggregation a : all)
         if(s != Sampling::UNIF || config.full) // quick mode: RRHT_Unif in fig13 only
           x.run(d, rrht(Rrht_setting::precise(s, a), rrht_k));
-    for(const Estimator& e : peers(config))
+    for(const Estimator& e : peers())
       x.run(d, e);
   }
 }
@@ -282,12 +281,12 @@ void fig15(const Config& config)
 }
 
 /// RRHT (precise, fast, Cubes) and every peer.
-void compare_all(Experiment& x, const Config& config, const Dataset& d)
+void compare_all(Experiment& x, const Dataset& d)
 {
   x.run(d, rrht(Rrht_setting::precise(), rrht_k));
   x.run(d, rrht(Rrht_setting::fast(), rrht_k));
   x.run(d, rrht(Rrht_setting::precise(Sampling::CUBES), rrht_k));
-  for(const Estimator& e : peers(config))
+  for(const Estimator& e : peers())
     x.run(d, e);
 }
 
@@ -310,7 +309,7 @@ void meshes(const Config& config)
         warn_missing(path);
         continue;
       }
-      compare_all(x, config, d);
+      compare_all(x, d);
     }
 }
 
@@ -339,7 +338,7 @@ void points(const Config& config)
       warn_missing(path);
       continue;
     }
-    compare_all(x, config, d);
+    compare_all(x, d);
   }
 }
 
@@ -358,7 +357,7 @@ void scans(const Config& config)
       warn_missing(path);
       continue;
     }
-    compare_all(x, config, d);
+    compare_all(x, d);
   }
 }
 
