@@ -31,17 +31,23 @@ struct Dataset
   std::size_t inliers = 0; // the samples before the outliers
 };
 
-/// `make(n, seed)` for a synthetic shape of test/shapes.h, with noise.
-template <typename Make>
-Dataset synthetic(const std::string& name, Make make, std::size_t n, double noise_percent, unsigned int seed)
+/// A clean cloud with noise added; every sample is an inlier.
+inline Dataset with_noise(const std::string& name, Cloud cloud, double noise_percent, unsigned int seed)
 {
   Dataset d;
   d.name = name;
-  d.cloud = make(n, seed);
+  d.cloud = std::move(cloud);
   add_noise(d.cloud, noise_percent, seed + 1000);
   d.noise_percent = noise_percent;
   d.inliers = d.cloud.size();
   return d;
+}
+
+/// `make(n, seed)` for a synthetic shape of test/shapes.h, with noise.
+template <typename Make>
+Dataset synthetic(const std::string& name, Make make, std::size_t n, double noise_percent, unsigned int seed)
+{
+  return with_noise(name, make(n, seed), noise_percent, seed);
 }
 
 /// Outliers after the noise, as in the paper's Fig. 15.
@@ -55,13 +61,10 @@ inline void add_outliers(Dataset& d, double percent, double radius, unsigned int
 inline bool mesh(const std::string& path, const std::string& name, std::size_t n, double noise_percent,
                  unsigned int seed, Dataset& d)
 {
-  d = Dataset();
-  if(!sample_mesh(path, n, seed, d.cloud))
+  Cloud cloud;
+  if(!sample_mesh(path, n, seed, cloud))
     return false;
-  d.name = name;
-  add_noise(d.cloud, noise_percent, seed + 1000);
-  d.noise_percent = noise_percent;
-  d.inliers = d.cloud.size();
+  d = with_noise(name, std::move(cloud), noise_percent, seed);
   return true;
 }
 

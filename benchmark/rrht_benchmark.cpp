@@ -115,6 +115,17 @@ std::vector<Estimator> peers()
 
 void warn_missing(const std::string& path) { std::cout << "skipped (not found): " << path << std::endl; }
 
+/// `mesh()` on ../shared/data/meshes/`file`, with a message if it is absent.
+bool shared_mesh(const Config& config, const std::string& file, const std::string& name, std::size_t n,
+                 double noise_percent, unsigned int seed, Dataset& d)
+{
+  const std::string path = config.shared("meshes/" + file);
+  if(mesh(path, name, n, noise_percent, seed, d))
+    return true;
+  warn_missing(path);
+  return false;
+}
+
 // -- The headline: precise, fast, Cubes and Unif against every peer on the
 // cube, the closed cylinder and the fandisk, 0.2% noise, 1 and 2 threads.
 // The per-point errors of RRHT_Points_c and jet_K80 feed the Fig. 8
@@ -125,10 +136,8 @@ void headline(const Config& config)
   const std::size_t n = config.pick<std::size_t>(10000, 100000);
   std::vector<Dataset> sets = { synthetic("cube", cube, n, 0.2, 1), synthetic("cylinder", closed_cylinder, n, 0.2, 2) };
   Dataset fandisk;
-  if(mesh(config.shared("meshes/fandisk.off"), "fandisk", n, 0.2, 3, fandisk))
+  if(shared_mesh(config, "fandisk.off", "fandisk", n, 0.2, 3, fandisk))
     sets.push_back(fandisk);
-  else
-    warn_missing(config.shared("meshes/fandisk.off"));
   for(const Dataset& d : sets)
   {
     x.run(d, rrht(Rrht_setting::precise(), rrht_k), config.headline_threads, d.name + "_RRHT_Points_c.txt");
@@ -264,10 +273,8 @@ void fig15(const Config& config)
   const std::size_t n = config.pick<std::size_t>(5000, 50000);
   std::vector<Dataset> sets = { synthetic("cylinder", closed_cylinder, n, 0.2, 13) };
   Dataset bunny;
-  if(mesh(config.shared("meshes/bunny00.off"), "bunny", n, 0.2, 14, bunny))
+  if(shared_mesh(config, "bunny00.off", "bunny", n, 0.2, 14, bunny))
     sets.push_back(bunny);
-  else
-    warn_missing(config.shared("meshes/bunny00.off"));
   for(const Dataset& clean : sets)
     for(double outliers : { 0., 100., 300. })
     {
@@ -303,13 +310,8 @@ void meshes(const Config& config)
     for(std::size_t i = 0; i < names.size(); ++i)
     {
       Dataset d;
-      const std::string path = config.shared("meshes/" + names[i] + ".off");
-      if(!mesh(path, names[i], n, noise, unsigned(20 + i), d))
-      {
-        warn_missing(path);
-        continue;
-      }
-      compare_all(x, d);
+      if(shared_mesh(config, names[i] + ".off", names[i], n, noise, unsigned(20 + i), d))
+        compare_all(x, d);
     }
 }
 
