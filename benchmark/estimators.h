@@ -107,6 +107,39 @@ inline Estimator rrht(const Rrht_setting& s, const Neighborhood& n)
   return e;
 }
 
+/// The bare cost of RRHT's neighborhoods: what `rrht_estimate_normals()`
+/// does besides its Hough transforms. The copy of the cloud, the Hilbert sort
+/// and the kd-tree of `CGAL::RRHT::Neighbor_search`, then the neighborhood of
+/// every point, over the same blocks and threads
+/// (`CGAL::RRHT::internal::for_each_block`), and nothing done with them.
+/// Writes no normals.
+inline Estimator neighbor_queries(const Neighborhood& n)
+{
+  Estimator e;
+  e.name = "queries" + n.suffix();
+  e.estimate = [n](Cloud& cloud, unsigned int) {
+    typedef CGAL::RRHT::Neighbor_search Search;
+    std::vector<Search::Point> points;
+    for(const Sample& s : cloud)
+      points.emplace_back(s.point.x(), s.point.y(), s.point.z());
+    const Search search(std::move(points), CGAL::Parallel_if_available_tag());
+    struct Scratch
+    {
+      Search::Scratch search;
+      CGAL::RRHT::Neighborhood neighborhood;
+    };
+    const std::function<bool(double)> no_callback;
+    CGAL::RRHT::internal::Progress progress(no_callback, search.size());
+    CGAL::RRHT::internal::for_each_block<CGAL::Parallel_if_available_tag>(
+      search.size(), progress, []() { return Scratch(); },
+      [&](std::size_t begin, std::size_t end, Scratch& scratch) {
+        for(std::size_t i = begin; i < end; ++i)
+          search.find(i, n.k, n.radius, scratch.neighborhood, scratch.search);
+      });
+  };
+  return e;
+}
+
 /// CGAL::jet_estimate_normals, default degrees (fitting 2, monge 2).
 inline Estimator jet(const Neighborhood& n)
 {

@@ -69,14 +69,19 @@ public:
   {
     std::vector<unsigned int> counts = e.parallel ? threads : std::vector<unsigned int>{ 1 };
     for(std::size_t i = 0; i < counts.size(); ++i)
-    {
-      const std::string errors_path =
-        (i == 0 && !errors_file.empty()) ? config_.scratch + "/" + errors_file : std::string();
-      const Measurement m = measure(e.estimate, d.cloud, counts[i], config_.runs, config_.timeout, errors_path);
-      write(d, e, counts[i], m);
-    }
+      run_with(d, e, counts[i], i == 0 ? errors_file : std::string());
   }
   void run(const Dataset& d, const Estimator& e) { run(d, e, config_.threads); }
+
+  /// Measures `e` on `d` with `threads` threads and returns the measurement.
+  Measurement run_with(const Dataset& d, const Estimator& e, unsigned int threads,
+                       const std::string& errors_file = std::string())
+  {
+    const std::string errors_path = errors_file.empty() ? std::string() : config_.scratch + "/" + errors_file;
+    const Measurement m = measure(e.estimate, d.cloud, threads, config_.runs, config_.timeout, errors_path);
+    write(d, e, threads, m);
+    return m;
+  }
 
 private:
   void write(const Dataset& d, const Estimator& e, unsigned int threads, const Measurement& m)
@@ -363,12 +368,107 @@ void scans(const Config& config)
   }
 }
 
+// -- The performance targets (issue 5): each a ratio of two measurements
+// of this run, printed at the end and written to targets_ratios.csv.
+class Targets
+{
+public:
+  explicit Targets(const Config& config) : out_(config.out + "/targets_ratios.csv") {}
+
+  /// `numerator` / `denominator`, which should be at most `target` (or at
+  /// least, if `at_least`). A failed measurement gives no ratio.
+  void add(const std::string& what, double numerator, double denominator, double target, bool at_least = false)
+  {
+    const bool valid = numerator > 0 && denominator > 0;
+    rows_.push_back(Row{ what, valid ? numerator / denominator : 0., target, at_least, valid });
+  }
+
+  void print_and_write() const
+  {
+    std::ofstream csv(out_);
+    csv << "target,ratio,bound,met\n";
+    std::printf("\n%-72s %8s %10s %s\n", "target", "ratio", "bound", "met");
+    for(const Row& r : rows_)
+    {
+      const bool met = r.valid && (r.at_least ? r.ratio >= r.target : r.ratio <= r.target);
+      const char* verdict = !r.valid ? "n/a" : (met ? "yes" : "no");
+      char bound[32];
+      std::snprintf(bound, sizeof bound, "%s %.2f", r.at_least ? ">=" : "<=", r.target);
+      std::printf("%-72s %8.3f %10s %s\n", r.what.c_str(), r.ratio, bound, verdict);
+      csv << '"' << r.what << "\"," << r.ratio << ',' << bound << ',' << verdict << '\n';
+    }
+    std::fflush(stdout);
+  }
+
+private:
+  struct Row
+  {
+    std::string what;
+    double ratio, target;
+    bool at_least, valid;
+  };
+  std::string out_;
+  std::vector<Row> rows_;
+};
+
+void targets(const Config& config)
+{
+  Experiment x(config, "targets");
+  Targets t(config);
+  const Estimator fast = rrht(Rrht_setting::fast(), rrht_k), precise = rrht(Rrht_setting::precise(), rrht_k);
+  const Estimator jet80 = jet(paper_k), queries = neighbor_queries(rrht_k);
+
+  // The 100k-point cube with 0.2% noise.
+  const Dataset c = synthetic("cube", cube, 100000, 0.2, 30);
+  const Measurement jet_2 = x.run_with(c, jet80, 2), queries_2 = x.run_with(c, queries, 2);
+  const Measurement fast_1 = x.run_with(c, fast, 1), fast_2 = x.run_with(c, fast, 2);
+  const Measurement precise_1 = x.run_with(c, precise, 1), precise_2 = x.run_with(c, precise, 2);
+  const Measurement cubes_2 = x.run_with(c, rrht(Rrht_setting::fast(Sampling::CUBES), rrht_k), 2);
+  const Measurement unif_2 = x.run_with(c, rrht(Rrht_setting::fast(Sampling::UNIF), rrht_k), 2);
+  t.add("cube 100k, 2 threads: fast / jet_K80", fast_2.median(), jet_2.median(), 0.5);
+  t.add("cube 100k, 2 threads: precise (defaults) / jet_K80", precise_2.median(), jet_2.median(), 1.5);
+  t.add("cube 100k, 2 threads: fast / its bare K=100 queries", fast_2.median(), queries_2.median(), 2.5);
+  t.add("cube 100k: fast, 1 thread / 2 threads (speed-up)", fast_1.median(), fast_2.median(), 1.85, true);
+  t.add("cube 100k: precise, 1 thread / 2 threads (speed-up)", precise_1.median(), precise_2.median(), 1.85, true);
+  t.add("cube 100k, 2 threads, fast setting: Cubes / Points", cubes_2.median(), fast_2.median(), 1.3);
+  t.add("cube 100k, 2 threads, fast setting: Unif / Points", unif_2.median(), fast_2.median(), 3);
+
+  // The 1M-point sphere with 0.2% noise. The output is 3 doubles per point.
+  const std::size_t n = 1000000;
+  const Dataset s = synthetic("sphere", sphere, n, 0.2, 31);
+  const Measurement jet_s = x.run_with(s, jet80, 2), fast_s = x.run_with(s, fast, 2);
+  const Measurement queries_s = x.run_with(s, queries, 2);
+  const double output_mib = n * 3 * sizeof(double) / (1024. * 1024.);
+  t.add("sphere 1M, 2 threads: fast / jet_K80", fast_s.median(), jet_s.median(), 0.4);
+  t.add("sphere 1M, 2 threads: fast / its bare K=100 queries", fast_s.median(), queries_s.median(), 2.5);
+  t.add("sphere 1M, 2 threads: fast peak memory / (jet_K80 peak + output)", fast_s.peak_mib,
+        jet_s.peak_mib + output_mib, 1);
+  t.print_and_write();
+}
+
+// -- Time against the number of points at the fast setting, against jet
+// fitting: sphere with 0.2% noise, 2 threads (the report fits n log n).
+void scaling(const Config& config)
+{
+  Experiment x(config, "scaling");
+  const std::vector<std::size_t> sizes = config.pick<std::vector<std::size_t> >(
+    { 100000, 200000, 400000 }, { 100000, 200000, 500000, 1000000, 2000000, 4000000 });
+  for(std::size_t n : sizes)
+  {
+    const Dataset d = synthetic("sphere", sphere, n, 0.2, 32);
+    x.run(d, rrht(Rrht_setting::fast(), rrht_k));
+    x.run(d, jet(paper_k));
+    x.run(d, neighbor_queries(rrht_k));
+  }
+}
+
 typedef void (*Run)(const Config&);
 const std::vector<std::pair<std::string, Run> >& experiments()
 {
   static const std::vector<std::pair<std::string, Run> > all = {
     { "headline", headline }, { "fig6", fig6 },   { "fig7", fig7 },     { "fig9", fig9 },   { "fig10", fig10 },
-    { "fig13", fig13 },       { "fig15", fig15 }, { "meshes", meshes }, { "points", points }, { "scans", scans }
+    { "fig13", fig13 },       { "fig15", fig15 }, { "meshes", meshes }, { "points", points }, { "scans", scans },
+    { "targets", targets },   { "scaling", scaling }
   };
   return all;
 }

@@ -91,6 +91,43 @@ TEST_CASE("Every direction maps to a valid bin, n and -n to the same one", "[acc
   }
 }
 
+TEST_CASE("The bin lookup tables give the bins defined by the angles", "[accumulator]")
+{
+  // The definition (Bin_layout's documentation): slice of the polar angle
+  // of the upper representative, then bin of the azimuth in the slice.
+  const double pi = 3.14159265358979323846;
+  Random rng(11, 0);
+  for(unsigned int slices : { 1u, 2u, 5u, 14u, 15u, 25u, 100u })
+  {
+    const Bin_layout layout(slices);
+    const double h = pi / slices;
+    std::vector<std::size_t> first_of_slice(1, 0);
+    for(std::size_t b = 1; b < layout.size(); ++b)
+      if(std::abs(std::acos(layout.center(b).z()) - std::acos(layout.center(b - 1).z())) > 1e-9)
+        first_of_slice.push_back(b);
+    first_of_slice.push_back(layout.size());
+    for(int i = 0; i < 100000; ++i)
+    {
+      Eigen::Vector3d n = random_direction(rng);
+      if(n.z() < 0)
+        n = -n;
+      const double phi = std::acos((std::min)(1., n.z()));
+      const std::size_t s = (std::min)(std::size_t(phi / h), first_of_slice.size() - 2);
+      const bool straddles = (slices % 2 == 1) && s + 2 == first_of_slice.size();
+      const double period = straddles ? pi : 2 * pi;
+      const double theta = std::fmod(std::atan2(n.y(), n.x()) + 2 * pi, period);
+      const std::size_t bins = first_of_slice[s + 1] - first_of_slice[s];
+      const double position = theta / period * bins;
+      const double nearest_boundary = std::abs(position - std::round(position)) / bins * period;
+      const double to_slice_boundary = std::abs(phi / h - std::round(phi / h)) * h;
+      if(nearest_boundary < 1e-9 || to_slice_boundary < 1e-9)
+        continue; // on a boundary: rounding decides
+      INFO("n_phi = " << slices << ", n = " << n.transpose());
+      REQUIRE(layout.bin(n) == first_of_slice[s] + (std::min)(std::size_t(position), bins - 1));
+    }
+  }
+}
+
 TEST_CASE("The accumulator keeps the two most voted bins and the mean normal of the first", "[accumulator]")
 {
   const Bin_layout layout(15);
@@ -139,6 +176,28 @@ TEST_CASE("Eq. 10: disjoint confidence intervals of the two most voted bins", "[
   CHECK(!confidence_intervals_are_disjoint(0, 0, 0));
 }
 
+TEST_CASE("Eq. 10 cannot hold before the number of votes the batches are cut at", "[stopping]")
+{
+  // Exhaustively for small counts: d is the least number of votes after
+  // which some sequence of votes passes the test, and no sequence passes it
+  // sooner (the gap grows by at most one per vote, and does so when every
+  // vote goes to the first bin).
+  for(std::size_t votes = 0; votes <= 300; ++votes)
+    for(std::size_t first = 0; first <= votes; ++first)
+      for(std::size_t second = 0; second <= (std::min)(first, votes - first); ++second)
+      {
+        if(confidence_intervals_are_disjoint(first, second, votes))
+          continue;
+        const std::size_t d = votes_before_intervals_can_be_disjoint(first, second, votes);
+        INFO(first << " " << second << " of " << votes << ": d = " << d);
+        REQUIRE(d >= 1);
+        REQUIRE(confidence_intervals_are_disjoint(first + d, second, votes + d));
+        REQUIRE(!confidence_intervals_are_disjoint(first + d - 1, second, votes + d - 1));
+      }
+  CHECK(votes_before_intervals_can_be_disjoint(0, 0, 0) == 4);       // 4 votes for one bin: 4^2 >= 4 * 4
+  CHECK(votes_before_intervals_can_be_disjoint(30, 25, 300) == 32);  // (5 + 32)^2 = 1369 >= 4 * 332
+}
+
 TEST_CASE("Random streams depend only on the seed and the stream number", "[random]")
 {
   Random a(42, 17), b(42, 17), c(42, 18), d(43, 17);
@@ -183,7 +242,7 @@ TEST_CASE("RRHT_Points never draws the same triple twice in a run", "[sampling]"
       Triple t;
       for(int i = 0; i < 1000; ++i)
       {
-        REQUIRE(sampler.draw(rng, t));
+        REQUIRE(sampler.draw(rng, 1, &t) == 1);
         REQUIRE(t[0] < t[1]);
         REQUIRE(t[1] < t[2]);
         REQUIRE(t[2] < 30);
@@ -196,12 +255,14 @@ TEST_CASE("RRHT_Points never draws the same triple twice in a run", "[sampling]"
     sampler.prepare(10, 1000); // C(10,3) = 120
     sampler.start_run();
     std::set<Triple> seen;
-    Triple t;
-    while(sampler.draw(rng, t))
-      REQUIRE(seen.insert(t).second);
+    Triple batch[50];
+    std::size_t got = 0;
+    while((got = sampler.draw(rng, 50, batch)) > 0) // batches of 50, 50, then 20
+      for(std::size_t i = 0; i < got; ++i)
+        REQUIRE(seen.insert(batch[i]).second);
     CHECK(seen.size() == 120);
     sampler.start_run();
-    CHECK(sampler.draw(rng, t)); // a new run starts over
+    CHECK(sampler.draw(rng, 1, batch) == 1); // a new run starts over
   }
 }
 

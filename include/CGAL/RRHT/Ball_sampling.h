@@ -29,6 +29,30 @@ namespace RRHT {
 /// neighborhood whose spatial distribution hides all but one or two of its
 /// points), that point is drawn uniformly among the others instead.
 template <typename Sampler>
+void draw_distinct_triple(Sampler& sampler, std::uint32_t n, Random& rng, Triple& t);
+
+/// What RRHT_Cubes and RRHT_Unif share: a run is any number of triples of
+/// distinct points, each drawn with `Derived::draw_point()`. The interface
+/// is that of `Points_sampler`.
+template <typename Derived>
+class Ball_sampler
+{
+public:
+  void start_run() {}
+
+  std::size_t draw(Random& rng, std::size_t count, Triple* out)
+  {
+    Derived& self = static_cast<Derived&>(*this);
+    for(std::size_t i = 0; i < count; ++i)
+      draw_distinct_triple(self, m_n, rng, out[i]);
+    return count;
+  }
+
+protected:
+  std::uint32_t m_n = 0;
+};
+
+template <typename Sampler>
 void draw_distinct_triple(Sampler& sampler, std::uint32_t n, Random& rng, Triple& t)
 {
   for(int i = 0; i < 3; ++i)
@@ -159,13 +183,14 @@ private:
 /// probability proportional to its weight, among those holding points (an
 /// empty cube is picked again, which is the same as leaving it out), then a
 /// point of that cube uniformly.
-class Cubes_sampler
+class Cubes_sampler : public Ball_sampler<Cubes_sampler>
 {
 public:
   explicit Cubes_sampler(const Cube_weights& weights) : m_weights(&weights) {}
 
   void prepare(const std::vector<Eigen::Vector3d>& points, double radius)
   {
+    m_n = std::uint32_t(points.size());
     m_grid.build(points, radius, m_weights->cubes_per_axis());
     m_cubes.clear();
     m_cumulated.clear();
@@ -214,13 +239,14 @@ private:
 /// than c^3 (small neighborhoods, or a large c), where the first would need
 /// up to c^3 draws. After 100 000 failed draws (only possible through
 /// rounding) a point is drawn uniformly instead.
-class Unif_sampler
+class Unif_sampler : public Ball_sampler<Unif_sampler>
 {
 public:
   explicit Unif_sampler(unsigned int presampling_factor) : m_c(presampling_factor) {}
 
   void prepare(const std::vector<Eigen::Vector3d>& points, double radius)
   {
+    m_n = std::uint32_t(points.size());
     m_points = &points;
     m_radius = radius;
     m_small_radius = radius / m_c;

@@ -14,14 +14,18 @@
 #include <CGAL/Fuzzy_sphere.h>
 #include <CGAL/Kd_tree.h>
 #include <CGAL/property_map.h>
+#include <CGAL/hilbert_sort.h>
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
 
 #include <Eigen/Core>
 
+#include <boost/iterator/counting_iterator.hpp>
 #include <boost/iterator/function_output_iterator.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -40,6 +44,13 @@ struct Neighborhood
   double radius = 0;
 };
 
+/// Whether the three coordinates of `p` are finite.
+template <typename Point>
+bool has_finite_coordinates(const Point& p)
+{
+  return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z());
+}
+
 /// Neighborhood queries on the points of a cloud, with CGAL's kd-tree.
 ///
 /// - k-neighborhood (`radius` = 0): the point and its k nearest neighbors
@@ -55,9 +66,13 @@ struct Neighborhood
 /// neighborhood does not depend on how the tree was traversed, and a ball
 /// whose cap is not reached is the same neighborhood as the uncapped ball.
 ///
-/// The tree holds indices into the cloud; points whose index is not given to
-/// the constructor (e.g. those with non-finite coordinates) are never
-/// neighbors.
+/// Only the points with finite coordinates are kept; they are never
+/// neighbors of the others. They are stored in the order of a Hilbert curve
+/// (`CGAL::hilbert_sort()`), and queries are made by position in that order:
+/// points close in space are close in memory, so consecutive queries walk
+/// the same branches of the tree and read the same cache lines. On a
+/// randomly ordered 1M-point cloud this halves the time of the queries
+/// (see benchmark/results/targets).
 class Neighbor_search
 {
 public:
@@ -81,19 +96,37 @@ public:
     std::vector<std::pair<double, std::size_t> > ball; // squared distance, index
   };
 
-  /// `points`: the whole cloud (kept by reference); `indexed`: the indices of
-  /// the points to put in the tree.
-  Neighbor_search(const std::vector<Point>& points, const std::vector<std::size_t>& indexed)
-    : m_points(points),
-      m_point_map(CGAL::make_property_map(points)),
-      m_traits(m_point_map),
-      m_tree(indexed.begin(), indexed.end(), Splitter(), m_traits),
-      m_distance(m_point_map)
+  /// Takes the points of `cloud` that have finite coordinates (the cloud is
+  /// emptied), sorts them along a Hilbert curve and builds the tree.
+  template <typename ConcurrencyTag>
+  Neighbor_search(std::vector<Point>&& cloud, ConcurrencyTag)
   {
-    m_tree.build();
+    for(std::size_t i = 0; i < cloud.size(); ++i)
+      if(has_finite_coordinates(cloud[i]))
+        m_input_index.push_back(i);
+    typedef CGAL::Spatial_sort_traits_adapter_3<Kernel, Point_map> Sort_traits;
+    CGAL::hilbert_sort<ConcurrencyTag>(m_input_index.begin(), m_input_index.end(),
+                                       Sort_traits(CGAL::make_property_map(std::as_const(cloud))), CGAL::Hilbert_sort_median_policy());
+    m_points.reserve(m_input_index.size());
+    for(std::size_t i : m_input_index)
+      m_points.push_back(cloud[i]);
+    std::vector<Point>().swap(cloud);
+
+    m_point_map = CGAL::make_property_map(std::as_const(m_points));
+    m_traits = Traits(m_point_map);
+    m_distance = Distance(m_point_map);
+    m_tree.reset(new Tree(boost::counting_iterator<std::size_t>(0),
+                          boost::counting_iterator<std::size_t>(m_points.size()), Splitter(), m_traits));
+    m_tree->build();
   }
 
-  /// The neighborhood of point `query` (an index given to the constructor).
+  /// Number of points in the tree (those with finite coordinates).
+  std::size_t size() const { return m_points.size(); }
+
+  /// Position in the input cloud of the point at position `i` in the tree's order.
+  std::size_t input_index(std::size_t i) const { return m_input_index[i]; }
+
+  /// The neighborhood of the point at position `query` (from 0 to `size()`).
   void find(std::size_t query, unsigned int k, double radius, Neighborhood& out, Scratch& scratch) const
   {
     const Point& q = m_points[query];
@@ -103,7 +136,7 @@ public:
       if(k == 0)
       {
         scratch.ball.clear();
-        m_tree.search(boost::make_function_output_iterator(Collect_with_distance{ &scratch.ball, &m_points, &q }),
+        m_tree->search(boost::make_function_output_iterator(Collect_with_distance{ &scratch.ball, &m_points, &q }),
                       Sphere(q, radius, 0., m_traits));
         if(scratch.ball.size() >= 3)
         {
@@ -119,7 +152,7 @@ public:
       else
       {
         // The k + 1 nearest, cut at the radius: the ball, capped to the k nearest.
-        K_neighbor_search search(m_tree, q, k + 1, 0, true, m_distance);
+        K_neighbor_search search(*m_tree, q, k + 1, 0, true, m_distance);
         const double squared_radius = radius * radius;
         double farthest = 0;
         for(const auto& neighbor : search)
@@ -140,7 +173,7 @@ public:
       k = (k == 0) ? 3 : k; // fewer than 3 points in the ball: k nearest neighbors
     }
 
-    K_neighbor_search search(m_tree, q, k + 1, 0, true, m_distance);
+    K_neighbor_search search(*m_tree, q, k + 1, 0, true, m_distance);
     double farthest = 0;
     for(const auto& neighbor : search)
     {
@@ -167,10 +200,11 @@ private:
     return Eigen::Vector3d(p.x() - q.x(), p.y() - q.y(), p.z() - q.z());
   }
 
-  const std::vector<Point>& m_points;
+  std::vector<Point> m_points;           // along the Hilbert curve
+  std::vector<std::size_t> m_input_index; // position of each in the input
   Point_map m_point_map;
   Traits m_traits;
-  Tree m_tree;
+  std::unique_ptr<Tree> m_tree;           // built once the points are in place
   Distance m_distance;
 };
 

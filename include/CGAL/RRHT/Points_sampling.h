@@ -28,12 +28,16 @@ typedef std::array<std::uint32_t, 3> Triple;
 ///   random order (a Fisher-Yates shuffle done lazily, one swap per draw), so
 ///   that a run ends having seen every triple exactly once.
 /// - Otherwise a triple is drawn uniformly and redrawn if this run has
-///   already drawn it, as recorded in a small open-addressing hash set whose
-///   slots are stamped with the run number, so that starting a run clears
-///   nothing.
+///   already drawn it, as recorded in a small open-addressing hash set
+///   cleared at the start of each run.
+///
+/// Triples are drawn in batches (`draw()`), with no call per triple through
+/// the sampling mode. A triple costs one 64-bit random word when n < 2^21
+/// (three 21-bit numbers), and no branch that depends on the draw but the
+/// rare rejections: this loop runs for every plane of the RRHT.
 ///
 /// Memory, kept from one point to the next: 12 bytes per triple in the first
-/// case, 12 bytes per slot of the hash set (2 max_draws rounded up to a power
+/// case, 8 bytes per slot of the hash set (2 max_draws rounded up to a power
 /// of 2) in the second.
 class Points_sampler
 {
@@ -49,61 +53,51 @@ public:
         for(std::uint32_t b = 1; b < c; ++b)
           for(std::uint32_t a = 0; a < b; ++a)
             m_all.push_back(Triple{{a, b, c}});
+      return;
     }
-    else
-    {
-      std::size_t size = 16;
-      while(size < 2 * max_draws)
-        size *= 2;
-      if(m_keys.size() < size)
-      {
-        m_keys.assign(size, 0);
-        m_stamps.assign(size, 0);
-        m_run = 0;
-      }
-      m_mask = m_keys.size() - 1;
-    }
+    std::size_t size = 16;
+    while(size < 2 * max_draws)
+      size *= 2;
+    m_keys.resize(size);
+    m_mask = size - 1;
+    // Lemire's method on 21 bits: x * range >> 21 is uniform in [0, range)
+    // once the draws whose low 21 bits fall below 2^21 mod range are rejected.
+    for(std::uint32_t i = 0; i < 3; ++i)
+      m_rejection_threshold[i] = (n < small_limit) ? small_range % (n - i) : 0;
   }
 
   void start_run()
   {
     m_next = 0;
-    if(!m_enumerate && ++m_run == 0) // stamps wrapped around: really clear
-    {
-      std::fill(m_stamps.begin(), m_stamps.end(), 0u);
-      m_run = 1;
-    }
+    if(!m_enumerate)
+      std::fill(m_keys.begin(), m_keys.end(), std::uint64_t(0));
   }
 
-  /// Writes the next triple in `t`; false when every triple has been drawn.
-  bool draw(Random& rng, Triple& t)
+  /// Writes the next `count` triples of this run to `out`; returns how many
+  /// were written, fewer when every triple has been drawn.
+  std::size_t draw(Random& rng, std::size_t count, Triple* out)
   {
     if(m_enumerate)
     {
-      if(m_next == m_all.size())
-        return false;
-      std::swap(m_all[m_next], m_all[m_next + rng.uniform_index(std::uint32_t(m_all.size() - m_next))]);
-      t = m_all[m_next++];
-      return true;
+      count = (std::min)(count, m_all.size() - m_next);
+      for(std::size_t i = 0; i < count; ++i, ++m_next)
+      {
+        std::swap(m_all[m_next], m_all[m_next + rng.uniform_index(std::uint32_t(m_all.size() - m_next))]);
+        out[i] = m_all[m_next];
+      }
+      return count;
     }
-    for(;;)
-    {
-      std::uint32_t a = rng.uniform_index(m_n);
-      std::uint32_t b = rng.uniform_index(m_n - 1);
-      std::uint32_t c = rng.uniform_index(m_n - 2);
-      // Three distinct indices, uniformly: shift past the ones already taken.
-      if(b >= a) ++b;
-      const std::uint32_t lo = (std::min)(a, b), hi = (std::max)(a, b);
-      if(c >= lo) ++c;
-      if(c >= hi) ++c;
-      t = Triple{{a, b, c}};
-      std::sort(t.begin(), t.end());
-      if(insert(key(t)))
-        return true;
-    }
+    for(std::size_t i = 0; i < count; ++i)
+      do
+        out[i] = (m_n < small_limit) ? draw_triple_of_small_neighborhood(rng) : draw_triple(rng);
+      while(!insert(key(out[i])));
+    return count;
   }
 
 private:
+  static constexpr std::uint32_t small_limit = 1u << 21;
+  static constexpr std::uint64_t small_range = std::uint64_t(1) << 21;
+
   static std::uint64_t number_of_triples(std::uint64_t n)
   {
     if(n >= (1u << 21)) // C(n,3) beyond 2^60: more than any run draws
@@ -111,28 +105,63 @@ private:
     return n * (n - 1) * (n - 2) / 6;
   }
 
+  // Three distinct indices, sorted, from a in [0, n), b in [0, n-1) and c in
+  // [0, n-2) uniform: b and c are shifted past the indices already taken.
+  static Triple distinct_and_sorted(std::uint32_t a, std::uint32_t b, std::uint32_t c)
+  {
+    b += (b >= a);
+    const std::uint32_t lo = (std::min)(a, b), hi = (std::max)(a, b);
+    c += (c >= lo);
+    c += (c >= hi);
+    const std::uint32_t first = (std::min)(lo, c), last = (std::max)(hi, c);
+    return Triple{{ first, lo + hi + c - first - last, last }};
+  }
+
+  // A uniform triple when n < 2^21, from one random word.
+  Triple draw_triple_of_small_neighborhood(Random& rng) const
+  {
+    for(;;)
+    {
+      const std::uint64_t word = rng();
+      const std::uint64_t low = small_range - 1;
+      const std::uint64_t a = (word & low) * m_n, b = ((word >> 21) & low) * (m_n - 1),
+                          c = ((word >> 42) & low) * (m_n - 2);
+      if(((a & low) < m_rejection_threshold[0]) | ((b & low) < m_rejection_threshold[1]) |
+         ((c & low) < m_rejection_threshold[2]))
+        continue; // probability below 3 n / 2^21
+      return distinct_and_sorted(std::uint32_t(a >> 21), std::uint32_t(b >> 21), std::uint32_t(c >> 21));
+    }
+  }
+
+  // A uniform triple for any n.
+  Triple draw_triple(Random& rng) const
+  {
+    const std::uint32_t a = rng.uniform_index(m_n), b = rng.uniform_index(m_n - 1), c = rng.uniform_index(m_n - 2);
+    return distinct_and_sorted(a, b, c);
+  }
+
   // The exact triple when indices fit in 21 bits, else a 64-bit mix of it: two
   // draws of one triple always have the same key, so a repeat is never let
   // through (a rare collision of two different triples only costs a redraw).
+  // Never 0, the mark of an empty slot.
   static std::uint64_t key(const Triple& t)
   {
-    if(t[2] < (1u << 21))
+    if(t[2] < small_limit) // t[1] > 0
       return std::uint64_t(t[0]) | (std::uint64_t(t[1]) << 21) | (std::uint64_t(t[2]) << 42);
     Random mixer(t[0] | (std::uint64_t(t[1]) << 32), t[2]);
-    return mixer();
+    return mixer() | 1;
   }
 
   // Inserts `k` in this run's set; false if it was there already.
   bool insert(std::uint64_t k)
   {
     std::size_t slot = std::size_t((k * 0x9E3779B97F4A7C15ull) >> 17) & m_mask;
-    while(m_stamps[slot] == m_run)
+    while(m_keys[slot] != 0)
     {
       if(m_keys[slot] == k)
         return false;
       slot = (slot + 1) & m_mask;
     }
-    m_stamps[slot] = m_run;
     m_keys[slot] = k;
     return true;
   }
@@ -141,10 +170,9 @@ private:
   bool m_enumerate = true;
   std::vector<Triple> m_all;
   std::size_t m_next = 0;
-  std::vector<std::uint64_t> m_keys;
-  std::vector<std::uint32_t> m_stamps;
-  std::uint32_t m_run = 0;
+  std::vector<std::uint64_t> m_keys; // the set of this run's triples, 0 for an empty slot
   std::size_t m_mask = 0;
+  std::uint64_t m_rejection_threshold[3] = { 0, 0, 0 };
 };
 
 } // namespace RRHT
