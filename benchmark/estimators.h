@@ -119,9 +119,9 @@ inline Estimator neighbor_queries(const Neighborhood& n)
   e.name = "queries" + n.suffix();
   e.estimate = [n](Cloud& cloud, unsigned int) {
     typedef CGAL::RRHT::Neighbor_search Search;
-    std::vector<Search::Point> points;
+    std::vector<Search::Indexed_point> points;
     for(const Sample& s : cloud)
-      points.emplace_back(s.point.x(), s.point.y(), s.point.z());
+      points.emplace_back(Search::Point(s.point.x(), s.point.y(), s.point.z()), points.size());
     const Search search(std::move(points), CGAL::Parallel_if_available_tag());
     struct Scratch
     {

@@ -230,6 +230,29 @@ private:
   std::atomic<bool> m_interrupted;
 };
 
+/// The iterator to the element at a position of the input range: kept in a
+/// table, unless the iterators are random access.
+template <typename Iterator,
+          bool random_access = std::is_convertible<typename std::iterator_traits<Iterator>::iterator_category,
+                                                   std::random_access_iterator_tag>::value>
+class Elements
+{
+public:
+  void add(Iterator it) { m_iterators.push_back(it); }
+  Iterator at(Iterator, std::size_t position) const { return m_iterators[position]; }
+
+private:
+  std::vector<Iterator> m_iterators;
+};
+
+template <typename Iterator>
+class Elements<Iterator, true>
+{
+public:
+  void add(Iterator) {}
+  Iterator at(Iterator begin, std::size_t position) const { return begin + position; }
+};
+
 /// Calls `process(begin, end, scratch)` on blocks of at most 64 consecutive
 /// positions of [0, `size`), with one `scratch = make_scratch()` per thread:
 /// over TBB's threads with `Parallel_tag`, in order otherwise. Reports each
@@ -497,24 +520,26 @@ void rrht_estimate_normals(PointRange& points,
   settings.cos_cluster_angle = std::cos(cluster_angle * 3.14159265358979323846 / 180.);
   settings.seed = choose_parameter(get_parameter(np, internal_np::random_seed), 0u);
 
-  // The cloud in double precision; its finite points in one kd-tree, along
+  // The finite points of the cloud in double precision, in one kd-tree along
   // a Hilbert curve. The others get the null vector.
-  std::vector<typename PointRange::iterator> elements;
-  std::vector<RRHT::Neighbor_search::Point> cloud;
-  for(auto it = points.begin(); it != points.end(); ++it)
+  RRHT::internal::Elements<typename PointRange::iterator> elements;
+  std::vector<RRHT::Neighbor_search::Indexed_point> cloud;
+  std::size_t position = 0;
+  for(auto it = points.begin(); it != points.end(); ++it, ++position)
   {
     const auto& p = get(point_map, *it);
-    elements.push_back(it);
-    cloud.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-    if(!RRHT::has_finite_coordinates(cloud.back()))
+    const RRHT::Neighbor_search::Point q(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    elements.add(it);
+    if(RRHT::has_finite_coordinates(q))
+      cloud.emplace_back(q, position);
+    else
       put(normal_map, *it, CGAL::NULL_VECTOR);
   }
   if(cloud.empty())
     return;
   const RRHT::Neighbor_search search(std::move(cloud), ConcurrencyTag());
   const std::size_t size = search.size();
-  if(size > 0)
-    settings.k = static_cast<unsigned int>((std::min<std::size_t>)(k, size - 1));
+  settings.k = static_cast<unsigned int>((std::min<std::size_t>)(k, size - 1));
   const RRHT::Cube_weights cube_weights(settings.sampling == RRHT::Sampling::CUBES ? settings.presampling_factor : 1);
 
   // Points are processed along the Hilbert curve, each with the random
@@ -524,7 +549,7 @@ void rrht_estimate_normals(PointRange& points,
     {
       const std::size_t input_index = search.input_index(i);
       const Eigen::Vector3d n = RRHT::internal::estimate_normal(i, input_index, search, settings, scratch);
-      put(normal_map, *elements[input_index], Vector_3(FT(n.x()), FT(n.y()), FT(n.z())));
+      put(normal_map, *elements.at(points.begin(), input_index), Vector_3(FT(n.x()), FT(n.y()), FT(n.z())));
     }
   };
 

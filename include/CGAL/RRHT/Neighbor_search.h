@@ -66,8 +66,7 @@ bool has_finite_coordinates(const Point& p)
 /// neighborhood does not depend on how the tree was traversed, and a ball
 /// whose cap is not reached is the same neighborhood as the uncapped ball.
 ///
-/// Only the points with finite coordinates are kept; they are never
-/// neighbors of the others. They are stored in the order of a Hilbert curve
+/// The points, all with finite coordinates, are stored in the order of a Hilbert curve
 /// (`CGAL::hilbert_sort()`), and queries are made by position in that order:
 /// points close in space are close in memory, so consecutive queries walk
 /// the same branches of the tree and read the same cache lines. On a
@@ -78,13 +77,26 @@ class Neighbor_search
 public:
   typedef CGAL::Simple_cartesian<double> Kernel;
   typedef Kernel::Point_3 Point;
+  /// A point with its position in the input.
+  typedef std::pair<Point, std::size_t> Indexed_point;
 
 private:
+  // The tree holds positions in m_points; this map gives their points.
+  struct Point_map
+  {
+    typedef std::size_t key_type;
+    typedef Point value_type;
+    typedef const Point& reference;
+    typedef boost::readable_property_map_tag category;
+    const Indexed_point* points = nullptr;
+    friend reference get(const Point_map& map, std::size_t i) { return map.points[i].first; }
+  };
   typedef CGAL::Search_traits_3<Kernel> Base_traits;
-  typedef CGAL::Pointer_property_map<Point>::const_type Point_map;
   typedef CGAL::Search_traits_adapter<std::size_t, Point_map, Base_traits> Traits;
   typedef CGAL::Sliding_midpoint<Traits> Splitter;
-  typedef CGAL::Kd_tree<Traits, Splitter, CGAL::Tag_true, CGAL::Tag_true> Tree;
+  // Without the tree's cache of coordinates: the points are already in the
+  // order of the tree's leaves, and the cache would cost 24 bytes per point.
+  typedef CGAL::Kd_tree<Traits, Splitter, CGAL::Tag_true, CGAL::Tag_false> Tree;
   typedef CGAL::Distance_adapter<std::size_t, Point_map, CGAL::Euclidean_distance<Base_traits> > Distance;
   typedef CGAL::Orthogonal_k_neighbor_search<Traits, Distance, Splitter, Tree> K_neighbor_search;
   typedef CGAL::Fuzzy_sphere<Traits> Sphere;
@@ -96,23 +108,15 @@ public:
     std::vector<std::pair<double, std::size_t> > ball; // squared distance, index
   };
 
-  /// Takes the points of `cloud` that have finite coordinates (the cloud is
-  /// emptied), sorts them along a Hilbert curve and builds the tree.
+  /// Takes the points of `cloud`, which must have finite coordinates (the
+  /// cloud is emptied), sorts them along a Hilbert curve and builds the tree.
   template <typename ConcurrencyTag>
-  Neighbor_search(std::vector<Point>&& cloud, ConcurrencyTag)
+  Neighbor_search(std::vector<Indexed_point>&& cloud, ConcurrencyTag) : m_points(std::move(cloud))
   {
-    for(std::size_t i = 0; i < cloud.size(); ++i)
-      if(has_finite_coordinates(cloud[i]))
-        m_input_index.push_back(i);
-    typedef CGAL::Spatial_sort_traits_adapter_3<Kernel, Point_map> Sort_traits;
-    CGAL::hilbert_sort<ConcurrencyTag>(m_input_index.begin(), m_input_index.end(),
-                                       Sort_traits(CGAL::make_property_map(std::as_const(cloud))), CGAL::Hilbert_sort_median_policy());
-    m_points.reserve(m_input_index.size());
-    for(std::size_t i : m_input_index)
-      m_points.push_back(cloud[i]);
-    std::vector<Point>().swap(cloud);
-
-    m_point_map = CGAL::make_property_map(std::as_const(m_points));
+    typedef CGAL::Spatial_sort_traits_adapter_3<Kernel, CGAL::First_of_pair_property_map<Indexed_point> > Sort_traits;
+    CGAL::hilbert_sort<ConcurrencyTag>(m_points.begin(), m_points.end(), Sort_traits(),
+                                       CGAL::Hilbert_sort_median_policy());
+    m_point_map.points = m_points.data();
     m_traits = Traits(m_point_map);
     m_distance = Distance(m_point_map);
     m_tree.reset(new Tree(boost::counting_iterator<std::size_t>(0),
@@ -120,16 +124,16 @@ public:
     m_tree->build();
   }
 
-  /// Number of points in the tree (those with finite coordinates).
+  /// Number of points in the tree.
   std::size_t size() const { return m_points.size(); }
 
-  /// Position in the input cloud of the point at position `i` in the tree's order.
-  std::size_t input_index(std::size_t i) const { return m_input_index[i]; }
+  /// Position in the input of the point at position `i` in the tree's order.
+  std::size_t input_index(std::size_t i) const { return m_points[i].second; }
 
   /// The neighborhood of the point at position `query` (from 0 to `size()`).
   void find(std::size_t query, unsigned int k, double radius, Neighborhood& out, Scratch& scratch) const
   {
-    const Point& q = m_points[query];
+    const Point& q = m_points[query].first;
     out.points.clear();
     if(radius > 0)
     {
@@ -189,19 +193,18 @@ private:
   struct Collect_with_distance
   {
     std::vector<std::pair<double, std::size_t> >* ball;
-    const std::vector<Point>* points;
+    const std::vector<Indexed_point>* points;
     const Point* query;
-    void operator()(std::size_t i) const { ball->emplace_back(CGAL::squared_distance((*points)[i], *query), i); }
+    void operator()(std::size_t i) const { ball->emplace_back(CGAL::squared_distance((*points)[i].first, *query), i); }
   };
 
   Eigen::Vector3d relative(std::size_t i, const Point& q) const
   {
-    const Point& p = m_points[i];
+    const Point& p = m_points[i].first;
     return Eigen::Vector3d(p.x() - q.x(), p.y() - q.y(), p.z() - q.z());
   }
 
-  std::vector<Point> m_points;           // along the Hilbert curve
-  std::vector<std::size_t> m_input_index; // position of each in the input
+  std::vector<Indexed_point> m_points;   // along the Hilbert curve
   Point_map m_point_map;
   Traits m_traits;
   std::unique_ptr<Tree> m_tree;           // built once the points are in place

@@ -60,10 +60,8 @@ public:
       size *= 2;
     m_keys.resize(size);
     m_mask = size - 1;
-    // Lemire's method on 21 bits: x * range >> 21 is uniform in [0, range)
-    // once the draws whose low 21 bits fall below 2^21 mod range are rejected.
     for(std::uint32_t i = 0; i < 3; ++i)
-      m_rejection_threshold[i] = (n < small_limit) ? small_range % (n - i) : 0;
+      m_rejection_threshold[i] = (n < Random::bits21_limit) ? Random::rejection_threshold21(n - i) : 0;
   }
 
   void start_run()
@@ -89,15 +87,12 @@ public:
     }
     for(std::size_t i = 0; i < count; ++i)
       do
-        out[i] = (m_n < small_limit) ? draw_triple_of_small_neighborhood(rng) : draw_triple(rng);
+        out[i] = (m_n < Random::bits21_limit) ? draw_triple_of_small_neighborhood(rng) : draw_triple(rng);
       while(!insert(key(out[i])));
     return count;
   }
 
 private:
-  static constexpr std::uint32_t small_limit = 1u << 21;
-  static constexpr std::uint64_t small_range = std::uint64_t(1) << 21;
-
   static std::uint64_t number_of_triples(std::uint64_t n)
   {
     if(n >= (1u << 21)) // C(n,3) beyond 2^60: more than any run draws
@@ -123,13 +118,11 @@ private:
     for(;;)
     {
       const std::uint64_t word = rng();
-      const std::uint64_t low = small_range - 1;
-      const std::uint64_t a = (word & low) * m_n, b = ((word >> 21) & low) * (m_n - 1),
-                          c = ((word >> 42) & low) * (m_n - 2);
-      if(((a & low) < m_rejection_threshold[0]) | ((b & low) < m_rejection_threshold[1]) |
-         ((c & low) < m_rejection_threshold[2]))
-        continue; // probability below 3 n / 2^21
-      return distinct_and_sorted(std::uint32_t(a >> 21), std::uint32_t(b >> 21), std::uint32_t(c >> 21));
+      std::uint32_t a, b, c;
+      if(Random::draw21(word, m_n, m_rejection_threshold[0], a) &
+         Random::draw21(word >> 21, m_n - 1, m_rejection_threshold[1], b) &
+         Random::draw21(word >> 42, m_n - 2, m_rejection_threshold[2], c))
+        return distinct_and_sorted(a, b, c);
     }
   }
 
@@ -146,7 +139,7 @@ private:
   // Never 0, the mark of an empty slot.
   static std::uint64_t key(const Triple& t)
   {
-    if(t[2] < small_limit) // t[1] > 0
+    if(t[2] < Random::bits21_limit) // t[1] > 0
       return std::uint64_t(t[0]) | (std::uint64_t(t[1]) << 21) | (std::uint64_t(t[2]) << 42);
     Random mixer(t[0] | (std::uint64_t(t[1]) << 32), t[2]);
     return mixer() | 1;
@@ -172,7 +165,7 @@ private:
   std::size_t m_next = 0;
   std::vector<std::uint64_t> m_keys; // the set of this run's triples, 0 for an empty slot
   std::size_t m_mask = 0;
-  std::uint64_t m_rejection_threshold[3] = { 0, 0, 0 };
+  std::uint32_t m_rejection_threshold[3] = { 0, 0, 0 };
 };
 
 } // namespace RRHT
