@@ -116,6 +116,8 @@ TITLES = {
     "real_meshes": "Real meshes (../shared/data/meshes), sampled, the face normal as truth",
     "real_points": "Point sets with given normals (../shared/data/points)",
     "real_scans": "Real scans without normals (../shared/data/scans): time and memory",
+    "targets": "Performance targets (issue 5): 100k-point cube and 1M-point sphere, 0.2% noise",
+    "scaling": "Time against the number of points at the fast setting (sphere, 0.2% noise)",
 }
 
 COLORS = {"Points": "tab:blue", "Cubes": "tab:orange", "Unif": "tab:green", "jet_K80": "black",
@@ -163,24 +165,38 @@ def save(fig, path):
     return os.path.basename(path)
 
 
-def plot_fig6(rows, out):
+def plot_time_vs_points(rows, out, name, through, title):
+    """Time against the number of points, log-log, with the n log n line
+    through the largest cloud of the estimator `through`."""
     t = best_threads(rows)
     fig, ax = plt.subplots(figsize=(7, 5))
     plot_lines(ax, series(rows, lambda r: r["points"], lambda r: r["median_s"], t))
-    points = series(rows, lambda r: r["points"], lambda r: r["median_s"], t).get("RRHT_Points_c_noCI")
+    points = series(rows, lambda r: r["points"], lambda r: r["median_s"], t).get(through)
     if points and len(points) > 1:
         n0, t0 = points[-1]
         xs = [p[0] for p in points]
         ax.plot(xs, [t0 * n * math.log(n) / (n0 * math.log(n0)) for n in xs], color="gray", linewidth=0.8,
-                label="n log n through RRHT_Points")
+                label="n log n through " + through)
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("number of points")
     ax.set_ylabel("time (s), %d threads (VCM: 1)" % t)
-    ax.set_title("Sphere, 0.2% noise, no confidence interval")
+    ax.set_title(title)
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=7)
-    return [save(fig, os.path.join(out, "fig6_time_vs_points.png"))]
+    return [save(fig, os.path.join(out, name + ".png"))]
+
+
+def targets_table(out):
+    """The ratios rrht_benchmark printed for the targets, from targets_ratios.csv."""
+    path = os.path.join(out, "targets_ratios.csv")
+    if not os.path.exists(path):
+        return ""
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    lines = ["| target | ratio | bound | met |", "|---|---|---|---|"]
+    lines += ["| %s | %.3f | %s | %s |" % (r["target"], float(r["ratio"]), r["bound"], r["met"]) for r in rows]
+    return "\n".join(lines) + "\n"
 
 
 def plot_fig7(rows, out):
@@ -393,7 +409,13 @@ def main():
         images = []
         extra = ""
         if name == "fig6_time_vs_points":
-            images = plot_fig6(rows, out)
+            images = plot_time_vs_points(rows, out, name, "RRHT_Points_c_noCI",
+                                         "Sphere, 0.2% noise, no confidence interval")
+        elif name == "scaling":
+            images = plot_time_vs_points(rows, out, name, "RRHT_Points_c_fast",
+                                         "Sphere, 0.2% noise, fast setting (T = 300, n_rot = 2)")
+        elif name == "targets":
+            extra = targets_table(out)
         elif name == "fig7_confidence_interval":
             images, extra = plot_fig7(rows, out)
         elif name == "fig9_noise":

@@ -5,6 +5,8 @@
 #
 #   bash scripts/benchmark.sh [quick|full] [more rrht_benchmark options]
 #
+# RRHT_BENCHMARK_RESULTS=NAME writes to benchmark/results/NAME instead.
+#
 # quick takes minutes, full hours. PCL is compared too when Debian's
 # libpcl-dev is installed (RRHT_BENCHMARK_PCL=1 installs it).
 set -euo pipefail
@@ -23,17 +25,18 @@ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCGAL_RRHT_BUILD_BENCHM
 cmake --build "$build" -j"$(nproc)" --target rrht_benchmark
 
 commit=$(git -C "$root" describe --always --dirty 2>/dev/null || echo unknown) # before the old results go
-out="$root/benchmark/results/$mode"
-scratch="$build/errors-$mode"
+results=${RRHT_BENCHMARK_RESULTS:-$mode}
+out="$root/benchmark/results/$results"
+scratch="$build/errors-${results//\//-}"
 rm -rf "$out" "$scratch"
 mkdir -p "$out" "$scratch"
 {
-  echo "Command: \`bash scripts/benchmark.sh $mode${*:+ $*}\` at commit $commit, $(date -u '+%Y-%m-%d %H:%M UTC')."
+  echo "Command: \`${RRHT_BENCHMARK_RESULTS:+RRHT_BENCHMARK_RESULTS=$results }bash scripts/benchmark.sh $mode${*:+ $*}\` at commit $commit, $(date -u '+%Y-%m-%d %H:%M UTC')."
   echo "Machine: $(lscpu | sed -n 's/^Model name: *//p' | head -1), $(nproc) cores, $(free -g | awk '/^Mem:/ {print $2}') GiB;" \
        "$(g++ --version | head -1); CGAL $(dpkg-query -W -f='${Version}' libcgal-dev);" \
        "PCL: $(dpkg-query -W -f='${Version}' libpcl-dev 2>/dev/null || echo 'not installed')."
 } > "$out/machine.txt"
 "$build/benchmark/rrht_benchmark" --mode "$mode" --out "$out" --scratch "$scratch" \
-    --data "$root/../shared/data" "$@" | tee "$build/benchmark-$mode.log"
+    --data "$root/../shared/data" "$@" | tee "$build/benchmark-${results//\//-}.log"
 /usr/bin/python3 "$root/benchmark/report.py" "$out" --scratch "$scratch"
 echo "Results: $out/README.md"
