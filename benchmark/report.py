@@ -4,7 +4,7 @@
 """Turns the CSV files of rrht_benchmark into Markdown tables, plots and
 renderings of the error (the paper's Fig. 8 and 11).
 
-    report.py RESULTS_DIR [--scratch DIR]
+    report.py RESULTS_DIR [--scratch DIR] [--before EARLIER_RESULTS_DIR]
 
 RESULTS_DIR holds the CSV files and machine.txt (written by
 scripts/benchmark.sh); DIR holds the per-point error files. Needs Debian's
@@ -187,15 +187,31 @@ def plot_time_vs_points(rows, out, name, through, title):
     return [save(fig, os.path.join(out, name + ".png"))]
 
 
-def targets_table(out):
-    """The ratios rrht_benchmark printed for the targets, from targets_ratios.csv."""
-    path = os.path.join(out, "targets_ratios.csv")
+def read_ratios(folder):
+    path = os.path.join(folder, "targets_ratios.csv")
     if not os.path.exists(path):
-        return ""
+        return []
     with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
-    lines = ["| target | ratio | bound | met |", "|---|---|---|---|"]
-    lines += ["| %s | %.3f | %s | %s |" % (r["target"], float(r["ratio"]), r["bound"], r["met"]) for r in rows]
+        return list(csv.DictReader(f))
+
+
+def targets_table(out, before=None):
+    """The ratios rrht_benchmark printed for the targets, from
+    targets_ratios.csv, next to those of the `before` results if given."""
+    rows = read_ratios(out)
+    if not rows:
+        return ""
+    old = {r["target"]: r for r in read_ratios(before)} if before else {}
+    if old:
+        lines = ["| target | bound | before | met | after | met |", "|---|---|---|---|---|---|"]
+        for r in rows:
+            b = old.get(r["target"])
+            lines.append("| %s | %s | %s | %s | %.3f | %s |" % (
+                r["target"], r["bound"], "%.3f" % float(b["ratio"]) if b else "", b["met"] if b else "",
+                float(r["ratio"]), r["met"]))
+    else:
+        lines = ["| target | ratio | bound | met |", "|---|---|---|---|"]
+        lines += ["| %s | %.3f | %s | %s |" % (r["target"], float(r["ratio"]), r["bound"], r["met"]) for r in rows]
     return "\n".join(lines) + "\n"
 
 
@@ -387,6 +403,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("results")
     parser.add_argument("--scratch", default=None, help="folder of the per-point error files")
+    parser.add_argument("--before", default=None, help="earlier results whose target ratios to show next to these")
     args = parser.parse_args()
     out = args.results
     experiments = OrderedDict()
@@ -415,7 +432,7 @@ def main():
             images = plot_time_vs_points(rows, out, name, "RRHT_Points_c_fast",
                                          "Sphere, 0.2% noise, fast setting (T = 300, n_rot = 2)")
         elif name == "targets":
-            extra = targets_table(out)
+            extra = targets_table(out, args.before)
         elif name == "fig7_confidence_interval":
             images, extra = plot_fig7(rows, out)
         elif name == "fig9_noise":
