@@ -112,7 +112,8 @@ Candidate_normal hough_transform(const std::vector<Eigen::Vector3d>& points, Sam
     // The planes of the batch, then their bins, then their votes: the
     // iterations of each loop are independent, so the processor overlaps
     // them rather than waiting for the square root, division and table
-    // lookups of one plane before the next (2x faster than one loop).
+    // lookups of one plane before the next (the whole RRHT_Points run 15%
+    // faster than with one loop).
     std::size_t planes = 0;
     for(std::size_t i = 0; i < got; ++i)
     {
