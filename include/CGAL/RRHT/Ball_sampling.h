@@ -286,8 +286,7 @@ private:
 ///   center outside the live cells has an empty small ball). A center is
 ///   drawn uniformly in the live cells that meet B_P and kept if in B_P and
 ///   if its small ball is not empty: about vol(live) / vol(U) draws, against
-///   vol(B_P) / vol(U) (roughly 1.7 against 2.7 on a plane through the
-///   center for c = 4);
+///   vol(B_P) / vol(U);
 /// - from the neighbors: pick a neighbor q, a center x uniform in the ball of
 ///   radius s around q (kept if in B_P), and keep x with probability 1/m, m
 ///   being the number of neighbors within s of x (the balls around them
@@ -299,9 +298,9 @@ private:
 /// their coordinates), so that the points of a small ball are found by one
 /// scan of a short contiguous list. With the live cells, this made RRHT_Unif
 /// 4 times as fast as drawing centers in all of B_P and looking through the
-/// 27 cells around each (100k-point cube, fast setting: 10 s against 39 s). After 100 000
-/// failed draws (only possible through rounding) a point is drawn uniformly
-/// instead.
+/// 27 cells around each (100k-point cube, fast setting: 10 s against 39 s).
+/// After 100 000 failed draws (only possible through rounding) a point is
+/// drawn uniformly instead.
 class Unif_sampler : public Ball_sampler<Unif_sampler>
 {
 public:
@@ -351,6 +350,8 @@ public:
   {
     const std::uint32_t n = std::uint32_t(m_points->size());
     const std::uint32_t live = std::uint32_t(m_live_cells.size());
+    if(live == 0) // cannot happen: the cell of each point is live and meets B_P
+      return rng.uniform_index(n);
     const double r2 = m_small_radius * m_small_radius;
     for(int attempt = 0; attempt < 100000; ++attempt)
     {
