@@ -11,6 +11,7 @@
 #include <CGAL/RRHT/parameters.h>
 #include <CGAL/RRHT/Neighbor_search.h>
 #include <CGAL/RRHT/Accumulator.h>
+#include <CGAL/RRHT/Plane_batch.h>
 #include <CGAL/RRHT/stopping_rules.h>
 #include <CGAL/RRHT/Sampling.h>
 #include <CGAL/RRHT/aggregation.h>
@@ -64,19 +65,18 @@ struct Settings
 struct Scratch
 {
   Scratch(const Bin_layout& layout, const Cube_weights& cube_weights, unsigned int presampling_factor)
-    : accumulator(layout), cubes(cube_weights), unif(presampling_factor), triples(64), normals(64), bins(64)
+    : accumulator(layout), cubes(cube_weights), unif(presampling_factor), triples(Plane_batch::capacity)
   {}
 
   Neighbor_search::Scratch search;
   Neighborhood neighborhood;
-  std::vector<Eigen::Vector3d> rotated;
+  std::vector<Eigen::Vector3f> rotated; // the neighborhood rotated, over its radius, in single precision
   Accumulator accumulator;
   Points_sampler points;
   Cubes_sampler cubes;
   Unif_sampler unif;
   std::vector<Triple> triples; // a batch of draws
-  std::vector<Eigen::Vector3d> normals; // their unit normals, degenerate triples left out
-  std::vector<std::uint32_t> bins;      // and bins
+  Plane_batch planes;          // and their planes
   std::vector<Candidate_normal> candidates;
 };
 
@@ -86,58 +86,46 @@ struct Scratch
 /// returns the mean normal of the most voted bin (Section 4). Triples of
 /// (nearly) collinear or repeated points define no plane and cast no vote;
 /// the paper does not check near-collinearity (Section 2), we only leave out
-/// triples whose two edges make an angle below 1e-10 radians, which would
-/// give no direction at all.
+/// triples whose two edges make an angle below 1e-5 radians, which would
+/// give no direction in single precision (see `Plane_batch`).
 ///
-/// Triples are drawn in batches as long as eq. 10 cannot hold yet
-/// (`votes_before_intervals_can_be_disjoint()`), and the test is made after
-/// each batch: the run stops at the same vote as with a test after every
-/// vote, and draws the same triples.
+/// Triples are drawn, and their planes computed (`Plane_batch`), in
+/// batches; they vote one by one, and eq. 10 is tested after each vote, so
+/// the run stops at the same vote as when drawing one triple at a time. A
+/// batch is as large as the number of votes after which eq. 10 can hold
+/// (`votes_before_intervals_can_be_disjoint()`), or half the votes so far
+/// plus 8 when that is larger: a run of 300 planes that does not stop
+/// early takes 9 batches rather than 20, and a run that stops wastes at
+/// most that many planes, drawn and not voted.
 template <typename Sampler>
-Candidate_normal hough_transform(const std::vector<Eigen::Vector3d>& points, Sampler& sampler, Random& rng,
+Candidate_normal hough_transform(const std::vector<Eigen::Vector3f>& points, Sampler& sampler, Random& rng,
                                  const Settings& settings, Scratch& scratch)
 {
   Accumulator& accumulator = scratch.accumulator;
   accumulator.clear();
   sampler.start_run();
   std::size_t drawn = 0;
-  while(drawn < settings.number_of_planes)
+  bool stop = false;
+  while(!stop && drawn < settings.number_of_planes)
   {
     std::size_t wanted = (std::min)(settings.number_of_planes - drawn, scratch.triples.size());
     if(settings.use_confidence_interval)
-      wanted = (std::min)(wanted, votes_before_intervals_can_be_disjoint(accumulator.votes_of_most_voted_bin(),
-                                                                         accumulator.votes_of_second_most_voted_bin(),
-                                                                         accumulator.number_of_votes()));
+      wanted = (std::min)(wanted, (std::max)(accumulator.number_of_votes() / 2 + 8,
+                                             votes_before_intervals_can_be_disjoint(accumulator.votes_of_most_voted_bin(),
+                                                                                    accumulator.votes_of_second_most_voted_bin(),
+                                                                                    accumulator.number_of_votes())));
     const std::size_t got = sampler.draw(rng, wanted, scratch.triples.data());
-    // The planes of the batch, then their bins, then their votes: the
-    // iterations of each loop are independent, so the processor overlaps
-    // them rather than waiting for the square root, division and table
-    // lookups of one plane before the next (the whole RRHT_Points run 15%
-    // faster than with one loop).
-    std::size_t planes = 0;
-    for(std::size_t i = 0; i < got; ++i)
+    const std::size_t planes = scratch.planes.compute(points, scratch.triples.data(), got, accumulator.layout());
+    for(std::size_t i = 0; i < planes && !stop; ++i)
     {
-      const Triple& t = scratch.triples[i];
-      const Eigen::Vector3d u = points[t[1]] - points[t[0]];
-      const Eigen::Vector3d v = points[t[2]] - points[t[0]];
-      const Eigen::Vector3d n = u.cross(v);
-      const double squared_norm = n.squaredNorm();
-      scratch.normals[planes] = n / std::sqrt(squared_norm);
-      planes += (squared_norm > 1e-20 * u.squaredNorm() * v.squaredNorm());
+      accumulator.vote(scratch.planes.bin(i), scratch.planes.normal(i));
+      stop = settings.use_confidence_interval &&
+             confidence_intervals_are_disjoint(accumulator.votes_of_most_voted_bin(),
+                                               accumulator.votes_of_second_most_voted_bin(),
+                                               accumulator.number_of_votes());
     }
-    const Bin_layout& layout = accumulator.layout();
-    for(std::size_t i = 0; i < planes; ++i)
-      scratch.bins[i] = static_cast<std::uint32_t>(layout.bin_of_unit(scratch.normals[i]));
-    for(std::size_t i = 0; i < planes; ++i)
-      accumulator.vote(scratch.bins[i], scratch.normals[i]);
     drawn += got;
-    if(got < wanted)
-      break; // every triple of the neighborhood has voted
-    if(settings.use_confidence_interval &&
-       confidence_intervals_are_disjoint(accumulator.votes_of_most_voted_bin(),
-                                         accumulator.votes_of_second_most_voted_bin(),
-                                         accumulator.number_of_votes()))
-      break;
+    stop |= (got < wanted); // every triple of the neighborhood has voted
   }
   return Candidate_normal{ accumulator.normal_of_most_voted_bin(), accumulator.votes_of_most_voted_bin() };
 }
@@ -146,16 +134,20 @@ Candidate_normal hough_transform(const std::vector<Eigen::Vector3d>& points, Sam
 /// (Section 4): each run sees the points rotated, its normal is rotated back,
 /// and the normals are aggregated.
 template <typename Sampler>
-Eigen::Vector3d rotated_hough_transforms(const std::vector<Eigen::Vector3d>& points, Sampler& sampler, Random& rng,
+Eigen::Vector3d rotated_hough_transforms(const Neighborhood& neighborhood, Sampler& sampler, Random& rng,
                                          const Settings& settings, Scratch& scratch)
 {
+  const std::vector<Eigen::Vector3d>& points = neighborhood.points;
   scratch.candidates.clear();
   scratch.rotated.resize(points.size());
   for(unsigned int r = 0; r < settings.number_of_rotations; ++r)
   {
+    // Rotated and scaled to the unit ball: normals do not depend on the
+    // scale, and single precision keeps its relative accuracy.
     const Eigen::Matrix3d rotation = rng.uniform_rotation();
+    const Eigen::Matrix3d to_unit_ball = rotation / neighborhood.radius;
     for(std::size_t i = 0; i < points.size(); ++i)
-      scratch.rotated[i] = rotation * points[i];
+      scratch.rotated[i] = (to_unit_ball * points[i]).cast<float>();
     Candidate_normal candidate = hough_transform(scratch.rotated, sampler, rng, settings, scratch);
     candidate.normal = rotation.transpose() * candidate.normal; // back to the frame of the cloud
     scratch.candidates.push_back(candidate);
@@ -183,14 +175,14 @@ inline Eigen::Vector3d estimate_normal(std::size_t position, std::size_t input_i
   {
   case Sampling::CUBES:
     scratch.cubes.prepare(points, neighborhood.radius);
-    return rotated_hough_transforms(points, scratch.cubes, rng, settings, scratch);
+    return rotated_hough_transforms(neighborhood, scratch.cubes, rng, settings, scratch);
   case Sampling::UNIF:
     scratch.unif.prepare(points, neighborhood.radius);
-    return rotated_hough_transforms(points, scratch.unif, rng, settings, scratch);
+    return rotated_hough_transforms(neighborhood, scratch.unif, rng, settings, scratch);
   case Sampling::POINTS:
   default:
     scratch.points.prepare(std::uint32_t(points.size()), settings.number_of_planes);
-    return rotated_hough_transforms(points, scratch.points, rng, settings, scratch);
+    return rotated_hough_transforms(neighborhood, scratch.points, rng, settings, scratch);
   }
 }
 

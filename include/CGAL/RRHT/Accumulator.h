@@ -39,15 +39,16 @@ namespace RRHT {
 ///
 /// Bin index. The slice comes from the z coordinate against the cosines of
 /// the slice boundaries; the bin within the slice from the azimuth. Both are
-/// found without trigonometry, since this is done for every plane drawn:
-/// a table indexed by z gives the slice at the top of z's cell, at most a
-/// few comparisons with the slice boundaries below it give z's slice; the
-/// azimuth is replaced by the "diamond angle" (a rational function of x and
-/// y that grows with the azimuth), and a table indexed by it, then a
-/// comparison with the diamond angles of the bin boundaries, give the bin.
-/// The bins are exactly those defined by the angles (up to rounding). In a
-/// micro-benchmark of the lookup alone this is 3 times as fast as with
-/// `std::atan2` (8.5 ns against 26 ns per direction, the same bins).
+/// found without trigonometry and without a branch, since this is done for
+/// every plane drawn: a table of cells of z, fine enough that a cell holds
+/// at most one slice boundary, gives the slice at the bottom of z's cell
+/// and that boundary, and one comparison gives z's slice; the azimuth is
+/// replaced by the "diamond angle" (a rational function of x and y that
+/// grows with the azimuth), and a table of its cells, one per slice, gives
+/// the bin the same way. The bins are exactly those defined by the angles
+/// (up to rounding). In a micro-benchmark of the lookup alone, tables with
+/// a search loop were already 3 times as fast as `std::atan2` (8.5 ns
+/// against 26 ns per direction, the same bins).
 class Bin_layout
 {
 public:
@@ -84,7 +85,7 @@ public:
     if(!m_straddling)
       m_slice_z_low.back() = 0.; // exactly the equator
 
-    // Centers of the bins, used to orient the normals that vote (see Accumulator::vote).
+    // Centers of the bins.
     m_center.resize(size());
     for(std::size_t s = 0; s < m_bins_in_slice.size(); ++s)
     {
@@ -100,45 +101,69 @@ public:
       }
     }
 
-    // Slice lookup: cell c of [0, 1] in z gives the slice of z = (c + 1) / Z.
-    m_z_cells = (std::max)(1024u, 4 * kept);
-    m_slice_of_z_cell.resize(m_z_cells + 1);
-    for(unsigned int c = 0; c <= m_z_cells; ++c)
+    // Slice lookup: cell c covers z in [c / Z, (c + 1) / Z), with Z the
+    // smallest power of 2 for which no cell holds two slice boundaries.
+    for(std::size_t cells = 16;; cells *= 2)
     {
-      const double z = (std::min)(1., double(c + 1) / m_z_cells);
-      std::size_t slice = 0;
-      while(slice + 1 < kept && z < m_slice_z_low[slice])
-        ++slice;
-      m_slice_of_z_cell[c] = static_cast<std::uint32_t>(slice);
+      m_z_cells.clear();
+      bool fine_enough = true;
+      for(std::size_t c = 0; c < cells && fine_enough; ++c)
+      {
+        const double bottom = double(c) / cells, top = double(c + 1) / cells;
+        std::size_t slice = 0; // of the bottom of the cell
+        while(slice + 1 < kept && bottom < m_slice_z_low[slice])
+          ++slice;
+        const bool boundary_inside = slice > 0 && m_slice_z_low[slice - 1] < top;
+        fine_enough = !boundary_inside || slice == 1 || m_slice_z_low[slice - 2] >= top;
+        m_z_cells.push_back(Cell{ boundary_inside ? float(m_slice_z_low[slice - 1]) : infinity, std::uint32_t(slice) });
+      }
+      if(fine_enough)
+        break;
     }
+    m_last_z_cell = float(m_z_cells.size() - 1);
+    m_straddling_top = !m_straddling ? 0.f : (kept == 1 ? infinity : float(m_slice_z_low[kept - 2]));
 
-    // Azimuth lookup: the diamond angle at which each bin ends, and per slice
-    // a table of the bin at the start of each cell of diamond angles.
-    m_end_of_bin.resize(size());
+    // Azimuth lookup, per slice: the cells of its diamond angles, 2 per bin
+    // or more, so that no cell holds two bin boundaries.
     m_azimuth.resize(kept);
+    std::vector<double> end_of_bin; // diamond angle at which a bin of the slice ends
     for(std::size_t s = 0; s < kept; ++s)
     {
       Azimuth_lookup& a = m_azimuth[s];
       const bool straddles = m_straddling && (s + 1 == kept);
       const double period = straddles ? pi : 2 * pi;
-      a.range = straddles ? 2. : 4.;
+      const double range = straddles ? 2. : 4.;
       const unsigned int bins = m_bins_in_slice[s];
+      end_of_bin.clear();
       for(unsigned int b = 0; b + 1 < bins; ++b)
       {
         const double theta = (b + 1) * period / bins;
-        m_end_of_bin[m_first_bin[s] + b] = diamond_angle(std::cos(theta), std::sin(theta));
+        end_of_bin.push_back(diamond_angle(std::cos(theta), std::sin(theta)));
       }
-      m_end_of_bin[m_first_bin[s] + bins - 1] = std::numeric_limits<double>::infinity();
-      const unsigned int cells = (std::max)(256u, 2 * bins);
-      a.cells_per_unit = cells / a.range;
-      a.first_cell = static_cast<std::uint32_t>(m_bin_at_cell.size());
-      a.last_cell = cells - 1;
-      std::size_t bin = m_first_bin[s];
-      for(unsigned int c = 0; c < cells; ++c)
+      end_of_bin.push_back(std::numeric_limits<double>::infinity());
+      end_of_bin.push_back(std::numeric_limits<double>::infinity());
+      a.first_cell = static_cast<std::uint32_t>(m_azimuth_cells.size());
+      for(std::size_t cells = 2 * bins;; cells *= 2)
       {
-        while(m_end_of_bin[bin] <= c / a.cells_per_unit)
-          ++bin;
-        m_bin_at_cell.push_back(static_cast<std::uint32_t>(bin));
+        m_azimuth_cells.resize(a.first_cell);
+        bool fine_enough = true;
+        std::size_t bin = 0; // of the start of the cell
+        for(std::size_t c = 0; c < cells && fine_enough; ++c)
+        {
+          const double start = c * range / cells, end = (c + 1) * range / cells;
+          while(end_of_bin[bin] <= start)
+            ++bin;
+          const bool boundary_inside = end_of_bin[bin] < end;
+          fine_enough = !boundary_inside || end_of_bin[bin + 1] >= end;
+          m_azimuth_cells.push_back(Cell{ boundary_inside ? float(end_of_bin[bin]) : infinity,
+                                          std::uint32_t(m_first_bin[s] + bin) });
+        }
+        if(fine_enough)
+        {
+          a.cells_per_unit = float(cells / range);
+          a.last_cell = float(cells - 1);
+          break;
+        }
       }
     }
   }
@@ -177,44 +202,83 @@ public:
   /// Bin of the unit vector `n`.
   std::size_t bin_of_unit(const Vector& n) const
   {
-    // Representative of {n, -n} on the upper half sphere; on the equator, the
-    // one with y > 0 (or x > 0 when y = 0). The sign is random from one plane
-    // to the next: it is applied without a branch.
-    const bool flip = (n.z() < 0) | ((n.z() == 0) & ((n.y() < 0) | ((n.y() == 0) & (n.x() < 0))));
-    const double sign = flip ? -1. : 1.;
-    double x = sign * n.x(), y = sign * n.y();
-    const double z = sign * n.z();
-    // (The comparisons are written so that a NaN stays in range.)
-    std::size_t s = m_slice_of_z_cell[z < 1 ? static_cast<std::size_t>(z * m_z_cells) : m_z_cells];
-    while(s + 1 < m_slice_z_low.size() && z < m_slice_z_low[s])
-      ++s;
+    double sign;
+    return bin_and_sign(n.x(), n.y(), n.z(), sign);
+  }
 
+  /// Bin of the unit vector (x, y, z), in double or single precision, and
+  /// the sign (1 or -1) that puts the vector in the bin: the bins of the
+  /// half sphere stand for pairs of opposite directions, and the normals
+  /// that vote for a bin are summed with this sign, so that the sum of a bin
+  /// never cancels itself (Section 4).
+  template <typename Scalar>
+  std::size_t bin_and_sign(Scalar x, Scalar y, Scalar z, Scalar& sign) const
+  {
+    Scalar height, angle;
+    representative(x, y, z, Scalar(straddling_slice_top()), height, angle, sign);
+    return bin_of_representative(height, angle);
+  }
+
+  /// The representative of the directions {n, -n} of n = (x, y, z) in the
+  /// bins: its z coordinate `height` in [0, 1], its "angle" in [0, 4] (the
+  /// diamond angle of its projection on the xy plane, see
+  /// `diamond_angle()`) and the sign (1 or -1) that makes it from n.
+  ///
+  /// It is the one with z >= 0, and of the two with z = 0 the one whose z is
+  /// +0: `copysign` gives it, and the exact negation of n flips the sign of
+  /// a zero z as well, so n and -n always get the same one. In the slice
+  /// that straddles the equator (n_phi odd: z below `straddling_top`, the
+  /// value of `straddling_slice_top()`), azimuths are taken modulo pi, so
+  /// that its bins are whole squares across the equator: the angle is then
+  /// below 2, the representative possibly below the equator.
+  ///
+  /// Without a branch: the sign of a plane's normal is random. A loop over
+  /// this function vectorizes (see `Plane_batch`).
+  template <typename Scalar>
+  static void representative(Scalar x, Scalar y, Scalar z, Scalar straddling_top,
+                             Scalar& height, Scalar& angle, Scalar& sign)
+  {
+    const Scalar up = std::copysign(Scalar(1), z);
+    height = std::abs(z);
+    const Scalar q = diamond_angle(up * x, up * y);
+    const Scalar other_half = Scalar((height < straddling_top) & (q >= 2));
+    angle = q - 2 * other_half;
+    sign = up * (1 - 2 * other_half);
+  }
+
+  /// The height below which directions are in the slice that straddles the
+  /// equator: 0 (none) when n_phi is even.
+  float straddling_slice_top() const { return m_straddling_top; }
+
+  /// Bin of the representative of height `z` and angle `q` (see
+  /// `representative()`), from two table lookups. The cell tables hold
+  /// single precision boundaries: a direction within about 1e-7 of a
+  /// boundary may fall on either side. A NaN gives a bin in range.
+  template <typename Scalar>
+  std::size_t bin_of_representative(Scalar z, Scalar q) const
+  {
+    // Cell indices as (std::min)(last, x), which is `last` for a NaN x.
+    const Cell& slice_cell = m_z_cells[static_cast<std::uint32_t>((std::min)(Scalar(m_last_z_cell), z * Scalar(m_z_cells.size())))];
+    const std::size_t s = slice_cell.index - (z >= slice_cell.boundary);
     const Azimuth_lookup& a = m_azimuth[s];
-    if(a.range == 2 && (y < 0 || (y == 0 && x < 0)))
-    {
-      // The straddling slice is cut over azimuths modulo pi, so that the bins
-      // are whole squares across the equator.
-      x = -x; y = -y;
-    }
-    const double q = diamond_angle(x, y);
-    const double cell = q * a.cells_per_unit;
-    std::size_t b = m_bin_at_cell[a.first_cell + (cell < a.last_cell ? static_cast<std::uint32_t>(cell) : a.last_cell)];
-    while(q >= m_end_of_bin[b])
-      ++b;
-    return b;
+    const Cell& bin_cell = m_azimuth_cells[a.first_cell + static_cast<std::uint32_t>((std::min)(Scalar(a.last_cell), q * a.cells_per_unit))];
+    return bin_cell.index + (q >= bin_cell.boundary);
   }
 
   /// The diamond angle of (x, y): 0 on the x axis, then growing with the
   /// azimuth to 1, 2, 3 on the y, -x, -y axes and to 4 before the x axis
   /// again; 0 at the origin.
-  static double diamond_angle(double x, double y)
+  template <typename Scalar>
+  static Scalar diamond_angle(Scalar x, Scalar y)
   {
-    const double l1 = std::abs(x) + std::abs(y);
-    const double r = l1 > 0 ? y / l1 : 0.;
+    // Dividing by at least the smallest normal number rather than testing
+    // l1 > 0 keeps the function free of branches (at the origin y = 0).
+    const Scalar l1 = std::abs(x) + std::abs(y);
+    const Scalar r = y / (std::max)(l1, (std::numeric_limits<Scalar>::min)());
     // x >= 0: r, or 4 + r below the x axis; x < 0: 2 - r. Written as
     // arithmetic on the comparisons: the quadrant is random from one plane
     // to the next.
-    const double left = double(x < 0), below_right = double((x >= 0) & (y < 0));
+    const Scalar left = Scalar(x < 0), below_right = Scalar((x >= 0) & (y < 0));
     return 2 * left + 4 * below_right + (1 - 2 * left) * r;
   }
 
@@ -224,22 +288,33 @@ private:
     return std::upper_bound(m_first_bin.begin(), m_first_bin.end(), bin) - m_first_bin.begin() - 1;
   }
 
-  // The cells of diamond angles of one slice: from 0 to `range` (4, or 2 for
-  // the straddling slice), `cells_per_unit` per unit, their first bins in
-  // m_bin_at_cell from `first_cell` to `first_cell + last_cell`.
-  struct Azimuth_lookup
+  // A cell of a lookup table: the index (slice or bin) at its start and the
+  // boundary where the index changes within it, if any (else infinity): the
+  // slice is index - (z >= boundary), the bin index + (q >= boundary).
+  struct Cell
   {
-    double range;
-    double cells_per_unit;
-    std::uint32_t first_cell, last_cell;
+    float boundary;
+    std::uint32_t index;
   };
 
+  // The cells of diamond angles of one slice: from 0 to 4 (2 for the
+  // straddling slice), `cells_per_unit` per unit, in m_azimuth_cells from
+  // `first_cell` to `first_cell + last_cell`.
+  struct Azimuth_lookup
+  {
+    float cells_per_unit;
+    float last_cell;
+    std::uint32_t first_cell;
+  };
+
+  static constexpr float infinity = std::numeric_limits<float>::infinity();
+
   bool m_straddling;
-  unsigned int m_z_cells;
-  std::vector<std::uint32_t> m_slice_of_z_cell;
+  float m_straddling_top;
+  std::vector<Cell> m_z_cells;
+  float m_last_z_cell;
   std::vector<Azimuth_lookup> m_azimuth;
-  std::vector<std::uint32_t> m_bin_at_cell;
-  std::vector<double> m_end_of_bin; // diamond angle, infinite for the last bin of a slice
+  std::vector<Cell> m_azimuth_cells;
   std::vector<double> m_slice_z_low;
   std::vector<double> m_slice_area;
   std::vector<unsigned int> m_bins_in_slice;
@@ -269,40 +344,45 @@ public:
     std::fill(m_bins.begin(), m_bins.end(), Bin());
     m_first = 0;
     m_second = m_bins.size() > 1 ? 1 : 0;
+    m_first_votes = m_second_votes = 0;
     m_number_of_votes = 0;
   }
 
-  /// Adds the vote of a plane of normal `n` (nonzero, any length). The normal
-  /// is added to the bin's sum with the sign that agrees with the bin's
-  /// center, so that the sum of a bin never cancels itself.
+  /// Adds the vote of a plane of normal `n` (nonzero, any length).
   void vote(const Vector& n)
   {
     const Vector unit = n / std::sqrt(n.squaredNorm());
-    vote(m_layout->bin_of_unit(unit), unit);
+    double sign;
+    const std::size_t b = m_layout->bin_and_sign(unit.x(), unit.y(), unit.z(), sign);
+    vote(b, sign * unit);
   }
 
-  /// Adds the vote of the unit normal `unit` of bin `b`.
+  /// Adds the vote of the unit normal `unit` of bin `b`, with the sign
+  /// given by `Bin_layout::bin_and_sign()`.
   void vote(std::size_t b, const Vector& unit)
   {
     Bin& bin = m_bins[b];
-    // The sign without a branch: it is random when the bin straddles the equator.
-    bin.sum += std::copysign(1., unit.dot(m_layout->center(b))) * unit;
-    ++bin.votes;
+    bin.sum += unit;
+    const unsigned int votes = ++bin.votes;
     ++m_number_of_votes;
 
     // Votes only grow by one, so the two most voted bins follow
-    // incrementally; with selects rather than branches, since whether a plane
-    // votes for the first bin is random.
-    const bool new_first = bin.votes > m_bins[m_first].votes; // never when b is the first
-    const bool new_second = !new_first && b != m_first && b != m_second && bin.votes > m_bins[m_second].votes;
+    // incrementally, their votes kept apart so that the next vote does not
+    // wait for a load; with selects rather than branches, since whether a
+    // plane votes for the first bin is random.
+    const bool is_first = (b == m_first);
+    const bool new_first = !is_first && votes > m_first_votes;
+    const bool new_second = !is_first && !new_first && votes > m_second_votes;
     m_second = new_first ? m_first : (new_second ? b : m_second);
+    m_second_votes = new_first ? m_first_votes : (new_second ? votes : m_second_votes);
     m_first = new_first ? b : m_first;
+    m_first_votes = (is_first || new_first) ? votes : m_first_votes;
   }
 
   std::size_t number_of_votes() const { return m_number_of_votes; }
   std::size_t most_voted_bin() const { return m_first; }
-  unsigned int votes_of_most_voted_bin() const { return m_bins[m_first].votes; }
-  unsigned int votes_of_second_most_voted_bin() const { return m_first == m_second ? 0u : m_bins[m_second].votes; }
+  unsigned int votes_of_most_voted_bin() const { return m_first_votes; }
+  unsigned int votes_of_second_most_voted_bin() const { return m_second_votes; }
 
   /// Unit mean of the normals that voted for the most voted bin (Section 4);
   /// zero when nothing was voted.
@@ -324,6 +404,7 @@ private:
   const Bin_layout* m_layout;
   std::vector<Bin> m_bins;
   std::size_t m_first, m_second;
+  unsigned int m_first_votes, m_second_votes;
   std::size_t m_number_of_votes;
 };
 
