@@ -248,8 +248,11 @@ public:
       std::uint32_t i, j;
       if(!Random::draw21(word, std::uint32_t(m_cubes.size()), m_cube_threshold, i))
         continue;
-      const Cube& cube = m_cubes[(std::uint32_t((word >> 21) & (Random::bits21_limit - 1)) < m_cubes[i].keep) ? i
-                                                                                                      : m_cubes[i].alias];
+      // Cube i or its alias, selected with a mask: a branch would be
+      // mispredicted at random (the whole RRHT_Cubes run takes 1.35 s
+      // instead of 1.79 s with 2 threads, fast setting, 100k cube).
+      const std::uint32_t use_alias = 0u - std::uint32_t(std::uint32_t((word >> 21) & (Random::bits21_limit - 1)) >= m_cubes[i].keep);
+      const Cube& cube = m_cubes[i ^ ((i ^ m_cubes[i].alias) & use_alias)];
       if(cube.count >= Random::bits21_limit)
         return m_grid.point(cube.first + rng.uniform_index(cube.count));
       if(Random::draw21(word >> 42, cube.count, cube.threshold, j))

@@ -70,15 +70,17 @@ public:
     // 2. Normals, through Eigen.
     const Index n = static_cast<Index>(count);
     Array ux(m_ux, n), uy(m_uy, n), uz(m_uz, n), vx(m_vx, n), vy(m_vy, n), vz(m_vz, n);
-    Array nx(m_nx, n), ny(m_ny, n), nz(m_nz, n), norm(m_norm, n), edges(m_edges, n); // edges: |u|^2 |v|^2
+    Array nx(m_nx, n), ny(m_ny, n), nz(m_nz, n), squared_norm(m_squared_norm, n), edges(m_edges, n);
     nx = uy * vz - uz * vy;
     ny = uz * vx - ux * vz;
     nz = ux * vy - uy * vx;
-    norm = (nx.square() + ny.square() + nz.square()).sqrt();
-    edges = (ux.square() + uy.square() + uz.square()) * (vx.square() + vy.square() + vz.square());
-    nx /= norm;
-    ny /= norm;
-    nz /= norm;
+    squared_norm = nx.square() + ny.square() + nz.square();
+    edges = (ux.square() + uy.square() + uz.square()) * (vx.square() + vy.square() + vz.square()); // |u|^2 |v|^2
+    Array inverse_norm(m_inverse_norm, n);
+    inverse_norm = squared_norm.rsqrt();
+    nx *= inverse_norm;
+    ny *= inverse_norm;
+    nz *= inverse_norm;
 
     // 3. Representatives (Bin_layout::representative()), oriented normals.
     const float straddling_top = layout.straddling_slice_top();
@@ -99,7 +101,7 @@ public:
       m_nx[planes] = m_nx[i];
       m_ny[planes] = m_ny[i];
       m_nz[planes] = m_nz[i];
-      planes += (m_norm[i] * m_norm[i] > 1e-10f * m_edges[i]); // sin^2 of the angle; false for NaN
+      planes += (m_squared_norm[i] > 1e-10f * m_edges[i]); // sin^2 of the angle above 1e-10
     }
     return planes;
   }
@@ -113,7 +115,7 @@ private:
   alignas(16) float m_ux[capacity], m_uy[capacity], m_uz[capacity];
   alignas(16) float m_vx[capacity], m_vy[capacity], m_vz[capacity];
   alignas(16) float m_nx[capacity], m_ny[capacity], m_nz[capacity];
-  alignas(16) float m_norm[capacity], m_edges[capacity];
+  alignas(16) float m_squared_norm[capacity], m_inverse_norm[capacity], m_edges[capacity];
   alignas(16) float m_height[capacity], m_angle[capacity];
   std::uint32_t m_bin[capacity];
 };
