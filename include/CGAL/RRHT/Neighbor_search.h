@@ -62,11 +62,11 @@ bool has_finite_coordinates(const Point& p)
 ///   (as the first points met by the tree traversal would). A ball of fewer
 ///   than 3 points falls back to the k nearest neighbors (3 when k = 0).
 ///
-/// Balls, capped or not, list their points nearest first (ties by index
-/// for uncapped balls), so a ball does not depend on how the tree was
-/// traversed, and a ball whose cap is not reached is the same neighborhood
-/// as the uncapped ball. k-neighborhoods are listed in the order of CGAL's
-/// search queue, deterministic for a given cloud.
+/// Balls list their points nearest first (ties by position), so a ball
+/// does not depend on how the tree was traversed, and a ball whose cap is
+/// not reached is the same neighborhood as the uncapped ball. A ball whose
+/// cap is reached is the k-neighborhood, listed as it in the order of
+/// CGAL's search queue (deterministic for a given cloud).
 ///
 /// The points, all with finite coordinates, are stored in the order of a Hilbert curve
 /// (`CGAL::hilbert_sort()`), and queries are made by position in that order:
@@ -157,24 +157,34 @@ public:
       }
       else
       {
-        // The k + 1 nearest, cut at the radius: the ball, capped to the k nearest.
-        K_neighbor_search search(*m_tree, q, k + 1, 0, true, m_distance);
+        // The k + 1 nearest, cut at the radius: the ball, capped to the k
+        // nearest. When all are in the ball, it is the k-neighborhood (in
+        // the same order) and shrinks to the ball through the k-th
+        // neighbor; else it is the uncapped ball (sorted as it).
+        K_neighbor_search search(*m_tree, q, k + 1, 0, true, m_distance, false);
         const double squared_radius = radius * radius;
+        scratch.ball.clear();
+        std::size_t nearest = 0;
         double farthest = 0;
         for(const auto& neighbor : search)
         {
-          if(neighbor.second > squared_radius)
-            break;
-          out.points.push_back(relative(neighbor.first, q));
-          farthest = neighbor.second;
+          ++nearest;
+          if(neighbor.second <= squared_radius)
+          {
+            scratch.ball.emplace_back(CGAL::squared_distance(m_points[neighbor.first].first, q), neighbor.first);
+            farthest = (std::max)(farthest, neighbor.second);
+          }
         }
-        if(out.points.size() >= 3)
+        if(scratch.ball.size() >= 3)
         {
-          // A capped ball shrinks to the ball through the k-th neighbor.
-          out.radius = (out.points.size() == k + 1) ? std::sqrt(farthest) : radius;
+          const bool capped = (scratch.ball.size() == nearest && nearest == k + 1);
+          if(!capped)
+            std::sort(scratch.ball.begin(), scratch.ball.end());
+          for(const auto& neighbor : scratch.ball)
+            out.points.push_back(relative(neighbor.second, q));
+          out.radius = capped ? std::sqrt(farthest) : radius;
           return;
         }
-        out.points.clear();
       }
       k = (k == 0) ? 3 : k; // fewer than 3 points in the ball: k nearest neighbors
     }
