@@ -5,6 +5,7 @@
 // random streams, triple sampling, aggregation.
 
 #include <CGAL/RRHT/Accumulator.h>
+#include <CGAL/RRHT/Plane_batch.h>
 #include <CGAL/RRHT/aggregation.h>
 #include <CGAL/RRHT/Random.h>
 #include <CGAL/RRHT/Sampling.h>
@@ -91,40 +92,126 @@ TEST_CASE("Every direction maps to a valid bin, n and -n to the same one", "[acc
   }
 }
 
-TEST_CASE("The bin lookup tables give the bins defined by the angles", "[accumulator]")
+namespace {
+// The bins by their definition (Bin_layout's documentation): slice of the
+// polar angle of the upper representative, then bin of the azimuth in the
+// slice, with acos and atan2.
+class Reference_bins
 {
-  // The definition (Bin_layout's documentation): slice of the polar angle
-  // of the upper representative, then bin of the azimuth in the slice.
-  const double pi = 3.14159265358979323846;
-  Random rng(11, 0);
-  for(unsigned int slices : { 1u, 2u, 5u, 14u, 15u, 25u, 100u })
+public:
+  explicit Reference_bins(const Bin_layout& layout) : m_slices(0), m_h(0)
   {
-    const Bin_layout layout(slices);
-    const double h = pi / slices;
-    std::vector<std::size_t> first_of_slice(1, 0);
+    first_of_slice.push_back(0);
     for(std::size_t b = 1; b < layout.size(); ++b)
       if(std::abs(std::acos(layout.center(b).z()) - std::acos(layout.center(b - 1).z())) > 1e-9)
         first_of_slice.push_back(b);
     first_of_slice.push_back(layout.size());
+    m_slices = 2 * (first_of_slice.size() - 1) - (std::abs(layout.center(layout.size() - 1).z()) < 1e-12 ? 1 : 0);
+    m_h = pi / m_slices;
+  }
+
+  // The bin of the unit vector n, and its distance (radians) to the nearest
+  // boundary of its slice or bin.
+  std::size_t bin(Eigen::Vector3d n, double& to_boundary) const
+  {
+    if(n.z() < 0)
+      n = -n;
+    const double phi = std::acos((std::min)(1., n.z()));
+    const std::size_t s = (std::min)(std::size_t(phi / m_h), first_of_slice.size() - 2);
+    const bool straddles = (m_slices % 2 == 1) && s + 2 == first_of_slice.size();
+    const double period = straddles ? pi : 2 * pi;
+    const double theta = std::fmod(std::atan2(n.y(), n.x()) + 2 * pi, period);
+    const std::size_t bins = first_of_slice[s + 1] - first_of_slice[s];
+    const double position = theta / period * bins;
+    to_boundary = (std::min)(std::abs(position - std::round(position)) / bins * period * std::sin(phi),
+                             std::abs(phi / m_h - std::round(phi / m_h)) * m_h);
+    return first_of_slice[s] + (std::min)(std::size_t(position), bins - 1);
+  }
+
+  static constexpr double pi = 3.14159265358979323846;
+  std::vector<std::size_t> first_of_slice;
+
+private:
+  std::size_t m_slices;
+  double m_h;
+};
+} // namespace
+
+TEST_CASE("The bin lookup tables give the bins defined by the angles", "[accumulator]")
+{
+  Random rng(11, 0);
+  for(unsigned int slices : { 1u, 2u, 5u, 14u, 15u, 25u, 100u })
+  {
+    const Bin_layout layout(slices);
+    const Reference_bins reference(layout);
+    REQUIRE(reference.first_of_slice.size() == (slices + 1) / 2 + 1);
     for(int i = 0; i < 100000; ++i)
     {
-      Eigen::Vector3d n = random_direction(rng);
-      if(n.z() < 0)
-        n = -n;
-      const double phi = std::acos((std::min)(1., n.z()));
-      const std::size_t s = (std::min)(std::size_t(phi / h), first_of_slice.size() - 2);
-      const bool straddles = (slices % 2 == 1) && s + 2 == first_of_slice.size();
-      const double period = straddles ? pi : 2 * pi;
-      const double theta = std::fmod(std::atan2(n.y(), n.x()) + 2 * pi, period);
-      const std::size_t bins = first_of_slice[s + 1] - first_of_slice[s];
-      const double position = theta / period * bins;
-      const double nearest_boundary = std::abs(position - std::round(position)) / bins * period;
-      const double to_slice_boundary = std::abs(phi / h - std::round(phi / h)) * h;
-      if(nearest_boundary < 1e-9 || to_slice_boundary < 1e-9)
-        continue; // on a boundary: rounding decides
+      const Eigen::Vector3d n = random_direction(rng);
+      double to_boundary = 0;
+      const std::size_t expected = reference.bin(n, to_boundary);
+      if(to_boundary < 1e-6)
+        continue; // the tables hold single precision boundaries: rounding decides
       INFO("n_phi = " << slices << ", n = " << n.transpose());
-      REQUIRE(layout.bin(n) == first_of_slice[s] + (std::min)(std::size_t(position), bins - 1));
+      REQUIRE(layout.bin(n) == expected);
     }
+  }
+}
+
+TEST_CASE("Plane_batch: unit normals and bins of the planes of a batch, degenerate triples flagged", "[accumulator]")
+{
+  Random rng(12, 0);
+  std::vector<Eigen::Vector3f> points;
+  for(int i = 0; i < 50; ++i)
+    points.push_back(random_direction(rng).cast<float>() * float(rng.uniform_real()));
+  // Three collinear points (exact in single precision) and a repeated one.
+  const std::uint32_t line = std::uint32_t(points.size());
+  points.emplace_back(0.f, 0.f, 0.f);
+  points.emplace_back(0.5f, 0.25f, 0.125f);
+  points.emplace_back(1.f, 0.5f, 0.25f);
+  for(unsigned int slices : { 1u, 6u, 15u, 25u })
+  {
+    const Bin_layout layout(slices);
+    const Reference_bins reference(layout);
+    Plane_batch batch;
+    std::size_t checked = 0;
+    for(int round = 0; round < 200; ++round)
+    {
+      std::vector<Triple> triples;
+      for(std::size_t i = 0; i < Plane_batch::capacity - 2; ++i)
+        triples.push_back(Triple{{ rng.uniform_index(50), rng.uniform_index(50), rng.uniform_index(50) }});
+      triples.push_back(Triple{{ line, line + 1, line + 2 }});
+      triples.push_back(Triple{{ 7, 3, 7 }});
+      batch.compute(points, triples.data(), triples.size(), layout);
+      for(std::size_t i = 0; i < triples.size(); ++i)
+      {
+        const Triple& t = triples[i];
+        const Eigen::Vector3d a = points[t[0]].cast<double>(), b = points[t[1]].cast<double>(),
+                              c = points[t[2]].cast<double>();
+        const Eigen::Vector3d u = b - a, v = c - a, n = u.cross(v);
+        INFO("n_phi = " << slices << ", triple " << t[0] << " " << t[1] << " " << t[2]);
+        if(t[0] == t[1] || t[1] == t[2] || t[0] == t[2] || i + 2 >= triples.size())
+        {
+          REQUIRE(batch.bin(i) == Plane_batch::no_plane);
+          continue;
+        }
+        if(n.squaredNorm() < 1e-6 * u.squaredNorm() * v.squaredNorm())
+          continue; // nearly collinear: single precision may decide either way
+        const Eigen::Vector3d unit = n.normalized();
+        double sign;
+        const std::size_t expected_bin = layout.bin_and_sign(unit.x(), unit.y(), unit.z(), sign);
+        double to_boundary = 0;
+        REQUIRE(reference.bin(unit, to_boundary) == expected_bin);
+        if(to_boundary < 1e-5)
+          continue; // rounding decides
+        REQUIRE(batch.bin(i) == expected_bin);
+        // Single precision: about 1e-7 / sin(angle of the triple).
+        const double sine = n.norm() / (u.norm() * v.norm());
+        REQUIRE((batch.normal(i) - sign * unit).norm() < 1e-6 / sine);
+        ++checked;
+      }
+    }
+    CHECK(checked > 10000);
   }
 }
 

@@ -90,13 +90,13 @@ struct Scratch
 /// give no direction in single precision (see `Plane_batch`).
 ///
 /// Triples are drawn, and their planes computed (`Plane_batch`), in
-/// batches; they vote one by one, and eq. 10 is tested after each vote, so
-/// the run stops at the same vote as when drawing one triple at a time. A
-/// batch is as large as the number of votes after which eq. 10 can hold
-/// (`votes_before_intervals_can_be_disjoint()`), or half the votes so far
-/// plus 8 when that is larger: a run of 300 planes that does not stop
-/// early takes 9 batches rather than 20, and a run that stops wastes at
-/// most that many planes, drawn and not voted.
+/// batches; they vote one by one, and eq. 10 is tested after each vote from
+/// the first at which it can hold (`votes_before_intervals_can_be_disjoint()`),
+/// so the run stops at the same vote as when drawing one triple at a time.
+/// A batch is as large as that number of votes, or half the votes so far
+/// plus 8 when that is larger: a run of 300 planes that does not stop early
+/// takes 9 batches rather than 20, and a run that stops wastes at most that
+/// many planes, drawn and not voted.
 template <typename Sampler>
 Candidate_normal hough_transform(const std::vector<Eigen::Vector3f>& points, Sampler& sampler, Random& rng,
                                  const Settings& settings, Scratch& scratch)
@@ -108,21 +108,27 @@ Candidate_normal hough_transform(const std::vector<Eigen::Vector3f>& points, Sam
   bool stop = false;
   while(!stop && drawn < settings.number_of_planes)
   {
-    std::size_t wanted = (std::min)(settings.number_of_planes - drawn, scratch.triples.size());
+    // Votes of this batch before which eq. 10 cannot hold (none tested).
+    std::size_t untested = settings.number_of_planes;
     if(settings.use_confidence_interval)
-      wanted = (std::min)(wanted, (std::max)(accumulator.number_of_votes() / 2 + 8,
-                                             votes_before_intervals_can_be_disjoint(accumulator.votes_of_most_voted_bin(),
-                                                                                    accumulator.votes_of_second_most_voted_bin(),
-                                                                                    accumulator.number_of_votes())));
+      untested = votes_before_intervals_can_be_disjoint(accumulator.votes_of_most_voted_bin(),
+                                                        accumulator.votes_of_second_most_voted_bin(),
+                                                        accumulator.number_of_votes()) - 1;
+    const std::size_t wanted = (std::min)({ settings.number_of_planes - drawn, scratch.triples.size(),
+                                            (std::max)(untested + 1, accumulator.number_of_votes() / 2 + 8) });
     const std::size_t got = sampler.draw(rng, wanted, scratch.triples.data());
-    const std::size_t planes = scratch.planes.compute(points, scratch.triples.data(), got, accumulator.layout());
-    for(std::size_t i = 0; i < planes && !stop; ++i)
+    scratch.planes.compute(points, scratch.triples.data(), got, accumulator.layout());
+    for(std::size_t i = 0; i < got && !stop; ++i)
     {
+      if(scratch.planes.bin(i) == Plane_batch::no_plane)
+        continue;
       accumulator.vote(scratch.planes.bin(i), scratch.planes.normal(i));
-      stop = settings.use_confidence_interval &&
-             confidence_intervals_are_disjoint(accumulator.votes_of_most_voted_bin(),
-                                               accumulator.votes_of_second_most_voted_bin(),
-                                               accumulator.number_of_votes());
+      if(untested > 0)
+        --untested;
+      else
+        stop = confidence_intervals_are_disjoint(accumulator.votes_of_most_voted_bin(),
+                                                 accumulator.votes_of_second_most_voted_bin(),
+                                                 accumulator.number_of_votes());
     }
     drawn += got;
     stop |= (got < wanted); // every triple of the neighborhood has voted

@@ -50,10 +50,10 @@ public:
   static constexpr std::size_t capacity = 64;
 
   /// Computes the planes through `triples[0, count)` of `points`
-  /// (count <= capacity) and their bins in `layout`; returns the number of
-  /// planes, degenerate triples left out. Plane i < size() has bin `bin(i)`
-  /// and unit normal `normal(i)`, oriented by `Bin_layout::bin_and_sign()`.
-  std::size_t compute(const std::vector<Eigen::Vector3f>& points, const Triple* triples, std::size_t count,
+  /// (count <= capacity) and their bins in `layout`: triple i has bin
+  /// `bin(i)`, `no_plane` when it is degenerate, and unit normal
+  /// `normal(i)`, oriented by `Bin_layout::bin_and_sign()`.
+  void compute(const std::vector<Eigen::Vector3f>& points, const Triple* triples, std::size_t count,
                       const Bin_layout& layout)
   {
     typedef Eigen::Map<Eigen::ArrayXf, Eigen::Aligned16> Array;
@@ -93,18 +93,16 @@ public:
       m_nz[i] *= sign;
     }
 
-    // 4. Bins; a degenerate triple is overwritten by the next plane.
-    std::size_t planes = 0;
+    // 4. Bins, and `no_plane` for degenerate triples.
     for(std::size_t i = 0; i < count; ++i)
     {
-      m_bin[planes] = static_cast<std::uint32_t>(layout.bin_of_representative(m_height[i], m_angle[i]));
-      m_nx[planes] = m_nx[i];
-      m_ny[planes] = m_ny[i];
-      m_nz[planes] = m_nz[i];
-      planes += (m_squared_norm[i] > 1e-10f * m_edges[i]); // sin^2 of the angle above 1e-10
+      const std::uint32_t bin = static_cast<std::uint32_t>(layout.bin_of_representative(m_height[i], m_angle[i]));
+      m_bin[i] = (m_squared_norm[i] > 1e-10f * m_edges[i]) ? bin : no_plane; // sin^2 of the angle above 1e-10
     }
-    return planes;
   }
+
+  /// The bin of triple i, `no_plane` if its points define no plane.
+  static constexpr std::uint32_t no_plane = ~std::uint32_t(0);
 
   std::uint32_t bin(std::size_t i) const { return m_bin[i]; }
   Eigen::Vector3d normal(std::size_t i) const { return Eigen::Vector3d(m_nx[i], m_ny[i], m_nz[i]); }

@@ -102,8 +102,9 @@ public:
       return count;
     }
     // Two passes over the batch, with no branch in the first: the candidate
-    // triples, then those that were neither rejected (`draw21()`) nor drawn
-    // already are kept, in order; the others are drawn again.
+    // triples and their keys, then those that were neither rejected
+    // (`draw21()`) nor drawn already are kept, in order; the others are
+    // drawn again.
     for(std::size_t first = 0; first < count; first += chunk)
     {
       Triple* chunk_out = out + first;
@@ -111,9 +112,9 @@ public:
       for(std::size_t kept = 0; kept < size;)
       {
         for(std::size_t i = kept; i < size; ++i)
-          m_accepted[i] = draw_triple_of_small_neighborhood(rng, chunk_out[i]);
+          m_chunk_keys[i] = draw_triple_of_small_neighborhood(rng, chunk_out[i]);
         for(std::size_t i = kept, end = size; i < end; ++i)
-          if(m_accepted[i] && insert(key(chunk_out[i])))
+          if(m_chunk_keys[i] != 0 && insert(m_chunk_keys[i]))
             chunk_out[kept++] = chunk_out[i];
       }
     }
@@ -140,9 +141,10 @@ private:
     return Triple{{ first, lo + hi + c - first - last, last }};
   }
 
-  // A uniform triple when n < 2^21, from one random word, or false when the
-  // word must be drawn again (probability below 3 n / 2^21).
-  bool draw_triple_of_small_neighborhood(Random& rng, Triple& t) const
+  // A uniform triple when n < 2^21, from one random word, and its key, or 0
+  // (the key of no triple) when the word must be drawn again (probability
+  // below 3 n / 2^21).
+  std::uint64_t draw_triple_of_small_neighborhood(Random& rng, Triple& t) const
   {
     const std::uint64_t word = rng();
     std::uint32_t a, b, c;
@@ -150,7 +152,7 @@ private:
                           Random::draw21(word >> 21, m_n - 1, m_rejection_threshold[1], b) &
                           Random::draw21(word >> 42, m_n - 2, m_rejection_threshold[2], c);
     t = distinct_and_sorted(a, b, c);
-    return accepted;
+    return accepted ? key_of_small(t) : 0;
   }
 
   // A uniform triple for any n.
@@ -166,9 +168,14 @@ private:
   static std::uint64_t key(const Triple& t)
   {
     if(t[2] < Random::bits21_limit)
-      return std::uint64_t(t[0]) | (std::uint64_t(t[1]) << 21) | (std::uint64_t(t[2]) << 42);
+      return key_of_small(t);
     Random mixer(t[0] | (std::uint64_t(t[1]) << 32), t[2]);
     return mixer();
+  }
+
+  static std::uint64_t key_of_small(const Triple& t)
+  {
+    return std::uint64_t(t[0]) | (std::uint64_t(t[1]) << 21) | (std::uint64_t(t[2]) << 42);
   }
 
   // Inserts `k` in this run's set; false if it was there already.
@@ -188,7 +195,7 @@ private:
   std::vector<Triple> m_all;
   std::size_t m_next = 0;
   static constexpr std::size_t chunk = 64;
-  bool m_accepted[chunk];              // for a chunk of draws
+  std::uint64_t m_chunk_keys[chunk];   // keys of a chunk of draws, 0 if rejected
   std::vector<std::uint64_t> m_keys;   // this run's triples
   std::vector<std::uint64_t> m_filter; // and their bits
   unsigned int m_filter_bits_log2 = 6;
