@@ -233,7 +233,8 @@ public:
   /// below 2, the representative possibly below the equator.
   ///
   /// Without a branch: the sign of a plane's normal is random. A loop over
-  /// this function vectorizes (see `Plane_batch`).
+  /// this function vectorizes (see `Plane_batch`); GCC 12 does so with the
+  /// `&` of the two comparisons below, not with their product.
   template <typename Scalar>
   static void representative(Scalar x, Scalar y, Scalar z, Scalar straddling_top,
                              Scalar& height, Scalar& angle, Scalar& sign)

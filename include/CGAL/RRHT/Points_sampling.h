@@ -37,9 +37,11 @@ typedef std::array<std::uint32_t, 3> Triple;
 ///   set, in a micro-benchmark of 300 draws among 101 points).
 ///
 /// Triples are drawn in batches (`draw()`), with no call per triple through
-/// the sampling mode. A triple costs one 64-bit random word when n < 2^21
-/// (three 21-bit numbers), and no branch that depends on the draw but the
-/// rare rejections: this loop runs for every plane of the RRHT.
+/// the sampling mode. When n <= 2^12 (`small_limit`), a triple costs one
+/// 64-bit random word (three 16-bit numbers), and is computed in a
+/// vectorized loop without branches (see `draw_candidates()`): this loop
+/// runs for every plane of the RRHT. Larger neighborhoods draw three
+/// numbers with `Random::uniform_index()`.
 ///
 /// Memory, kept from one point to the next: 12 bytes per triple in the first
 /// case, 8 bytes per triple and 4 bytes per triple of the filter (32
@@ -61,12 +63,12 @@ public:
       return;
     }
     m_filter_bits_log2 = 6;
-    while((std::size_t(1) << m_filter_bits_log2) < 32 * max_draws)
+    while((std::size_t(1) << m_filter_bits_log2) < 32 * max_draws && m_filter_bits_log2 < 32)
       ++m_filter_bits_log2;
     m_filter.resize((std::size_t(1) << m_filter_bits_log2) / 64);
     m_keys.reserve(max_draws);
-    for(std::uint32_t i = 0; i < 3; ++i)
-      m_rejection_threshold[i] = (n < Random::bits21_limit) ? Random::rejection_threshold21(n - i) : 0;
+    for(std::int32_t i = 0; i < 3; ++i)
+      m_rejection_threshold[i] = (n <= small_limit) ? std::int32_t((1u << 16) % (n - i)) : 0;
   }
 
   void start_run()
@@ -93,7 +95,7 @@ public:
       }
       return count;
     }
-    if(m_n >= Random::bits21_limit)
+    if(m_n > small_limit)
     {
       for(std::size_t i = 0; i < count; ++i)
         do
@@ -101,21 +103,23 @@ public:
         while(!insert(key(out[i])));
       return count;
     }
-    // Two passes over the batch, with no branch in the first: the candidate
-    // triples and their keys, then those that were neither rejected
-    // (`draw21()`) nor drawn already are kept, in order; the others are
-    // drawn again.
+    // Two passes over chunks of the batch: the candidate triples, in a
+    // loop without branches on 32-bit integers that the compiler
+    // vectorizes; then those that were neither rejected nor drawn already
+    // are kept, in order, and the others are drawn again.
     for(std::size_t first = 0; first < count; first += chunk)
     {
       Triple* chunk_out = out + first;
       const std::size_t size = (std::min)(chunk, count - first);
       for(std::size_t kept = 0; kept < size;)
       {
-        for(std::size_t i = kept; i < size; ++i)
-          m_chunk_keys[i] = draw_triple_of_small_neighborhood(rng, chunk_out[i]);
+        draw_candidates(rng, kept, size);
         for(std::size_t i = kept, end = size; i < end; ++i)
-          if(m_chunk_keys[i] != 0 && insert(m_chunk_keys[i]))
-            chunk_out[kept++] = chunk_out[i];
+        {
+          const Triple t = {{ std::uint32_t(m_first[i]), std::uint32_t(m_middle[i]), std::uint32_t(m_last[i]) }};
+          if(m_accepted[i] != 0 && insert(key(t), m_hash[i]))
+            chunk_out[kept++] = t;
+        }
       }
     }
     return count;
@@ -141,18 +145,46 @@ private:
     return Triple{{ first, lo + hi + c - first - last, last }};
   }
 
-  // A uniform triple when n < 2^21, from one random word, and its key, or 0
-  // (the key of no triple) when the word must be drawn again (probability
-  // below 3 n / 2^21).
-  std::uint64_t draw_triple_of_small_neighborhood(Random& rng, Triple& t) const
+  // Candidates [begin, end) of a chunk, when n <= small_limit: from one
+  // random word each, three 16-bit numbers to which Lemire's method gives
+  // a in [0, n), b in [0, n-1), c in [0, n-2) (rejected with probability
+  // below 3 n / 2^16), made distinct and sorted as `distinct_and_sorted()`,
+  // with a 32-bit hash for the filter. All in 32-bit integers (products
+  // below 2^28), without branches: the loops are vectorized, and the whole
+  // draw costs 6.3-6.9 ns per triple instead of 11.7 ns with three 21-bit
+  // numbers in 64-bit arithmetic (micro-benchmark of 300 draws among 101
+  // points).
+  void draw_candidates(Random& rng, std::size_t begin, std::size_t end)
   {
-    const std::uint64_t word = rng();
-    std::uint32_t a, b, c;
-    const bool accepted = Random::draw21(word, m_n, m_rejection_threshold[0], a) &
-                          Random::draw21(word >> 21, m_n - 1, m_rejection_threshold[1], b) &
-                          Random::draw21(word >> 42, m_n - 2, m_rejection_threshold[2], c);
-    t = distinct_and_sorted(a, b, c);
-    return accepted ? key_of_small(t) : 0;
+    for(std::size_t i = begin; i < end; ++i)
+    {
+      const std::uint64_t word = rng();
+      m_low_bits[i] = std::uint32_t(word);
+      m_high_bits[i] = std::uint32_t(word >> 32);
+    }
+    const std::int32_t n = std::int32_t(m_n);
+    const std::int32_t threshold_a = m_rejection_threshold[0], threshold_b = m_rejection_threshold[1],
+                       threshold_c = m_rejection_threshold[2];
+    for(std::size_t i = begin; i < end; ++i)
+    {
+      const std::int32_t product_a = std::int32_t(m_low_bits[i] & 0xFFFF) * n;
+      const std::int32_t product_b = std::int32_t(m_low_bits[i] >> 16) * (n - 1);
+      const std::int32_t product_c = std::int32_t(m_high_bits[i] & 0xFFFF) * (n - 2);
+      m_accepted[i] = ((product_a & 0xFFFF) >= threshold_a) & ((product_b & 0xFFFF) >= threshold_b) &
+                      ((product_c & 0xFFFF) >= threshold_c);
+      const std::int32_t a = product_a >> 16;
+      std::int32_t b = product_b >> 16, c = product_c >> 16;
+      b += (b >= a);
+      const std::int32_t low = a < b ? a : b, high = a < b ? b : a;
+      c += (c >= low);
+      c += (c >= high);
+      const std::int32_t first = low < c ? low : c, last = high < c ? c : high;
+      m_first[i] = first;
+      m_middle[i] = low + high + c - first - last;
+      m_last[i] = last;
+      m_hash[i] = (std::uint32_t(first) * 0x9E3779B1u) ^ (std::uint32_t(m_middle[i]) * 0x85EBCA77u) ^
+                  (std::uint32_t(last) * 0xC2B2AE3Du);
+    }
   }
 
   // A uniform triple for any n.
@@ -168,22 +200,20 @@ private:
   static std::uint64_t key(const Triple& t)
   {
     if(t[2] < Random::bits21_limit)
-      return key_of_small(t);
+      return std::uint64_t(t[0]) | (std::uint64_t(t[1]) << 21) | (std::uint64_t(t[2]) << 42);
     Random mixer(t[0] | (std::uint64_t(t[1]) << 32), t[2]);
     return mixer();
   }
 
-  static std::uint64_t key_of_small(const Triple& t)
-  {
-    return std::uint64_t(t[0]) | (std::uint64_t(t[1]) << 21) | (std::uint64_t(t[2]) << 42);
-  }
+  // Inserts `k` in this run's set; false if it was there already. `hash`
+  // picks the bit of the filter.
+  bool insert(std::uint64_t k) { return insert(k, std::uint32_t((k * 0x9E3779B97F4A7C15ull) >> 32)); }
 
-  // Inserts `k` in this run's set; false if it was there already.
-  bool insert(std::uint64_t k)
+  bool insert(std::uint64_t k, std::uint32_t hash)
   {
-    const std::uint64_t bit = (k * 0x9E3779B97F4A7C15ull) >> (64 - m_filter_bits_log2);
+    const std::uint32_t bit = hash >> (32 - m_filter_bits_log2);
     std::uint64_t& word = m_filter[bit >> 6];
-    const std::uint64_t mask = std::uint64_t(1) << (bit & 63);
+    const std::uint64_t mask = std::uint64_t(1) << (bit & 63u);
     if((word & mask) != 0 && std::find(m_keys.begin(), m_keys.end(), k) != m_keys.end())
       return false;
     word |= mask;
@@ -194,12 +224,18 @@ private:
   bool m_enumerate = true;
   std::vector<Triple> m_all;
   std::size_t m_next = 0;
+  // Neighborhoods of at most 2^12 points take the vectorized draw (the
+  // rejection rate of 16-bit numbers stays below 3 / 16 per triple).
+  static constexpr std::uint32_t small_limit = 1u << 12;
   static constexpr std::size_t chunk = 64;
-  std::uint64_t m_chunk_keys[chunk];   // keys of a chunk of draws, 0 if rejected
+  // A chunk of candidates: random bits, triple, accepted (0 or 1), hash.
+  std::uint32_t m_low_bits[chunk], m_high_bits[chunk];
+  std::int32_t m_first[chunk], m_middle[chunk], m_last[chunk], m_accepted[chunk];
+  std::uint32_t m_hash[chunk];
   std::vector<std::uint64_t> m_keys;   // this run's triples
   std::vector<std::uint64_t> m_filter; // and their bits
   unsigned int m_filter_bits_log2 = 6;
-  std::uint32_t m_rejection_threshold[3] = { 0, 0, 0 };
+  std::int32_t m_rejection_threshold[3] = { 0, 0, 0 };
 };
 
 } // namespace RRHT
