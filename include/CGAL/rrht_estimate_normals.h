@@ -118,18 +118,14 @@ Candidate_normal hough_transform(const std::vector<Eigen::Vector3f>& points, Sam
                                             (std::max)(untested + 1, accumulator.number_of_votes() / 2 + 8) });
     const std::size_t got = sampler.draw(rng, wanted, scratch.triples.data());
     scratch.planes.compute(points, scratch.triples.data(), got, accumulator.layout());
-    for(std::size_t i = 0; i < got && !stop; ++i)
-    {
-      if(scratch.planes.bin(i) == Plane_batch::no_plane)
-        continue;
-      accumulator.vote(scratch.planes.bin(i), scratch.planes.normal(i));
+    accumulator.vote(scratch.planes, got, [&](unsigned int first, unsigned int second, std::size_t votes) {
       if(untested > 0)
+      {
         --untested;
-      else
-        stop = confidence_intervals_are_disjoint(accumulator.votes_of_most_voted_bin(),
-                                                 accumulator.votes_of_second_most_voted_bin(),
-                                                 accumulator.number_of_votes());
-    }
+        return false;
+      }
+      return stop = confidence_intervals_are_disjoint(first, second, votes);
+    });
     drawn += got;
     stop |= (got < wanted); // every triple of the neighborhood has voted
   }

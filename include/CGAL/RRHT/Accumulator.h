@@ -343,10 +343,7 @@ public:
   void clear()
   {
     std::fill(m_bins.begin(), m_bins.end(), Bin());
-    m_first = 0;
-    m_second = m_bins.size() > 1 ? 1 : 0;
-    m_first_votes = m_second_votes = 0;
-    m_number_of_votes = 0;
+    m_top = Top_two{ 0, m_bins.size() > 1 ? std::size_t(1) : std::size_t(0), 0, 0, 0 };
   }
 
   /// Adds the vote of a plane of normal `n` (nonzero, any length).
@@ -360,41 +357,78 @@ public:
 
   /// Adds the vote of the unit normal `unit` of bin `b`, with the sign
   /// given by `Bin_layout::bin_and_sign()`.
-  void vote(std::size_t b, const Vector& unit)
-  {
-    Bin& bin = m_bins[b];
-    bin.sum += unit;
-    const unsigned int votes = ++bin.votes;
-    ++m_number_of_votes;
+  void vote(std::size_t b, const Vector& unit) { add_vote(b, unit, m_top); }
 
-    // Votes only grow by one, so the two most voted bins follow
-    // incrementally, their votes kept apart so that the next vote does not
-    // wait for a load; with selects rather than branches, since whether a
-    // plane votes for the first bin is random.
-    const bool is_first = (b == m_first);
-    const bool new_first = !is_first && votes > m_first_votes;
-    const bool new_second = !is_first && !new_first && votes > m_second_votes;
-    m_second = new_first ? m_first : (new_second ? b : m_second);
-    m_second_votes = new_first ? m_first_votes : (new_second ? votes : m_second_votes);
-    m_first = new_first ? b : m_first;
-    m_first_votes = (is_first || new_first) ? votes : m_first_votes;
+  /// Adds the votes of planes 0 to `count` - 1 of `planes` (a `Plane_batch`:
+  /// `bin(i)` and `normal(i)`, the bin `Planes::no_plane` for no plane) in
+  /// order, and calls `stop(first, second, votes)` with the votes of the two
+  /// most voted bins and the number of votes after each; stops after the
+  /// vote for which it returns true. Returns the number of planes looked at.
+  /// The two most voted bins are kept in local variables for the batch.
+  template <typename Planes, typename Stop>
+  std::size_t vote(const Planes& planes, std::size_t count, Stop stop)
+  {
+    Top_two top = m_top;
+    std::size_t i = 0;
+    while(i < count)
+    {
+      const std::uint32_t b = planes.bin(i++);
+      if(b == Planes::no_plane)
+        continue;
+      add_vote(b, planes.normal(i - 1), top);
+      if(stop(top.first_votes, top.second_votes, top.votes))
+        break;
+    }
+    m_top = top;
+    return i;
   }
 
-  std::size_t number_of_votes() const { return m_number_of_votes; }
-  std::size_t most_voted_bin() const { return m_first; }
-  unsigned int votes_of_most_voted_bin() const { return m_first_votes; }
-  unsigned int votes_of_second_most_voted_bin() const { return m_second_votes; }
+  std::size_t number_of_votes() const { return m_top.votes; }
+  std::size_t most_voted_bin() const { return m_top.first; }
+  unsigned int votes_of_most_voted_bin() const { return m_top.first_votes; }
+  unsigned int votes_of_second_most_voted_bin() const { return m_top.second_votes; }
 
   /// Unit mean of the normals that voted for the most voted bin (Section 4);
   /// zero when nothing was voted.
   Vector normal_of_most_voted_bin() const
   {
-    const Vector& s = m_bins[m_first].sum;
+    const Vector& s = m_bins[m_top.first].sum;
     const double norm = s.norm();
     return norm > 0 ? Vector(s / norm) : Vector::Zero();
   }
 
 private:
+  // The two most voted bins, their votes, and the number of votes.
+  struct Top_two
+  {
+    std::size_t first, second;
+    unsigned int first_votes, second_votes;
+    std::size_t votes;
+  };
+
+  void add_vote(std::size_t b, const Vector& unit, Top_two& top)
+  {
+    Bin& bin = m_bins[b];
+    bin.sum += unit;
+    const unsigned int votes = ++bin.votes;
+    ++top.votes;
+
+    // Votes only grow by one, so the two most voted bins follow
+    // incrementally. Whether a plane votes for the first bin is random, so
+    // the choices are made with masks rather than branches (which GCC
+    // makes of the conditional operators here).
+    const bool is_first = (b == top.first);
+    const bool new_first = !is_first & (votes > top.first_votes);
+    const bool new_second = !is_first & !new_first & (votes > top.second_votes);
+    const std::size_t first_mask = 0 - std::size_t(new_first), second_mask = 0 - std::size_t(new_second);
+    const std::size_t keep_second = ~(first_mask | second_mask), keep_first = 0 - std::size_t(!(is_first | new_first));
+    top.second = (top.first & first_mask) | (b & second_mask) | (top.second & keep_second);
+    top.second_votes = static_cast<unsigned int>((top.first_votes & first_mask) | (votes & second_mask) |
+                                                 (top.second_votes & keep_second));
+    top.first = (b & first_mask) | (top.first & ~first_mask);
+    top.first_votes = static_cast<unsigned int>((votes & ~keep_first) | (top.first_votes & keep_first));
+  }
+
   // The votes of a bin next to the sum of their normals: one cache line per vote.
   struct Bin
   {
@@ -404,9 +438,7 @@ private:
 
   const Bin_layout* m_layout;
   std::vector<Bin> m_bins;
-  std::size_t m_first, m_second;
-  unsigned int m_first_votes, m_second_votes;
-  std::size_t m_number_of_votes;
+  Top_two m_top;
 };
 
 } // namespace RRHT
