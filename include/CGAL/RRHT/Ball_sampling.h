@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <array>
 #include <initializer_list>
 #include <cmath>
 #include <cstdint>
@@ -203,8 +204,8 @@ public:
       if(range.first == range.second)
         continue;
       const std::uint32_t count = range.second - range.first;
-      m_cubes.push_back(Cube{ range.first, count, count < Random::bits21_limit ? Random::rejection_threshold21(count) : 0,
-                              0, std::uint32_t(m_cubes.size()) });
+      const Points_of_cube points{ range.first, count, count < Random::bits21_limit ? Random::rejection_threshold21(count) : 0 };
+      m_cubes.push_back(Cube{ 0, std::uint32_t(m_cubes.size()), {{ points, points }} });
       m_scaled.push_back(m_weights->weight(c));
       total += m_weights->weight(c);
     }
@@ -236,6 +237,8 @@ public:
       m_cubes[i].keep = Random::bits21_limit;
     for(std::uint32_t i : m_large)
       m_cubes[i].keep = Random::bits21_limit;
+    for(Cube& cube : m_cubes)
+      cube.points[1] = m_cubes[cube.alias].points[0];
   }
 
   /// A cube with the alias method, then a point in it: one random word (three
@@ -251,8 +254,10 @@ public:
       // Cube i or its alias, selected with a mask: a branch would be
       // mispredicted at random (the whole RRHT_Cubes run takes 1.35 s
       // instead of 1.79 s with 2 threads, fast setting, 100k cube).
-      const std::uint32_t use_alias = 0u - std::uint32_t(std::uint32_t((word >> 21) & (Random::bits21_limit - 1)) >= m_cubes[i].keep);
-      const Cube& cube = m_cubes[i ^ ((i ^ m_cubes[i].alias) & use_alias)];
+      // The points of the alias are stored with the cube, so that the cube
+      // is read once.
+      const Cube& entry = m_cubes[i];
+      const Points_of_cube& cube = entry.points[std::uint32_t((word >> 21) & (Random::bits21_limit - 1)) >= entry.keep];
       if(cube.count >= Random::bits21_limit)
         return m_grid.point(cube.first + rng.uniform_index(cube.count));
       if(Random::draw21(word >> 42, cube.count, cube.threshold, j))
@@ -261,11 +266,18 @@ public:
   }
 
 private:
-  // A cube that holds points: the first of them in the grid's order, their
-  // number, its rejection threshold, and its alias entry.
+  // The points of a cube: the first of them in the grid's order, their
+  // number, and its rejection threshold.
+  struct Points_of_cube
+  {
+    std::uint32_t first, count, threshold;
+  };
+  // An entry of the alias table: a cube that holds points, kept with
+  // probability keep / 2^21, else its alias; the points of both.
   struct Cube
   {
-    std::uint32_t first, count, threshold, keep, alias;
+    std::uint32_t keep, alias;
+    std::array<Points_of_cube, 2> points;
   };
 
   const Cube_weights* m_weights;
