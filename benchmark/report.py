@@ -4,7 +4,7 @@
 """Turns the CSV files of rrht_benchmark into Markdown tables, plots and
 renderings of the error (the paper's Fig. 8 and 11).
 
-    report.py RESULTS_DIR [--scratch DIR] [--before EARLIER_RESULTS_DIR]
+    report.py RESULTS_DIR [--scratch DIR] [--before EARLIER_RESULTS_DIR]...
 
 RESULTS_DIR holds the CSV files and machine.txt (written by
 scripts/benchmark.sh); DIR holds the per-point error files. Needs Debian's
@@ -196,20 +196,25 @@ def read_ratios(folder):
         return list(csv.DictReader(f))
 
 
-def targets_table(out, before=None):
+def targets_table(out, befores=()):
     """The ratios rrht_benchmark printed for the targets, from
-    targets_ratios.csv, next to those of the `before` results if given."""
+    targets_ratios.csv, after those of the earlier results `befores` if
+    given (columns named after the folders)."""
     rows = read_ratios(out)
     if not rows:
         return ""
-    old = {r["target"]: r for r in read_ratios(before)} if before else {}
-    if old:
-        lines = ["| target | bound | before | met | after | met |", "|---|---|---|---|---|---|"]
+    if befores:
+        olds = [{r["target"]: r for r in read_ratios(b)} for b in befores]
+        names = [os.path.basename(os.path.normpath(d)) for d in list(befores) + [out]]
+        lines = ["| target | bound | " + " | ".join("%s | met" % n for n in names) + " |",
+                 "|---|---|" + "---|---|" * len(names)]
         for r in rows:
-            b = old.get(r["target"])
-            lines.append("| %s | %s | %s | %s | %.3f | %s |" % (
-                r["target"], r["bound"], "%.3f" % float(b["ratio"]) if b else "", b["met"] if b else "",
-                float(r["ratio"]), r["met"]))
+            cells = []
+            for old in olds:
+                b = old.get(r["target"])
+                cells += ["%.3f" % float(b["ratio"]) if b else "", b["met"] if b else ""]
+            cells += ["%.3f" % float(r["ratio"]), r["met"]]
+            lines.append("| %s | %s | %s |" % (r["target"], r["bound"], " | ".join(cells)))
     else:
         lines = ["| target | ratio | bound | met |", "|---|---|---|---|"]
         lines += ["| %s | %.3f | %s | %s |" % (r["target"], float(r["ratio"]), r["bound"], r["met"]) for r in rows]
@@ -404,7 +409,8 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("results")
     parser.add_argument("--scratch", default=None, help="folder of the per-point error files")
-    parser.add_argument("--before", default=None, help="earlier results whose target ratios to show next to these")
+    parser.add_argument("--before", action="append", default=[],
+                        help="earlier results whose target ratios to show next to these (may be repeated)")
     args = parser.parse_args()
     out = args.results
     experiments = OrderedDict()
