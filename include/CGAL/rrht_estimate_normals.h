@@ -30,6 +30,7 @@
 #include <tbb/parallel_for.h>
 #endif
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstdint>

@@ -27,9 +27,9 @@ namespace RRHT {
 /// (structure of arrays), in single precision, and each step is one loop
 /// over the batch whose iterations are independent:
 ///   1. the two edges of each triple (gathered from the points);
-///   2. the normal, its norm and the unit normal, with Eigen's array
-///      expressions (they use SSE/AVX/NEON, square root included, which a
-///      plain loop only gets with -fno-math-errno);
+///   2. the normal, the reciprocal of its norm and the unit normal, with
+///      Eigen's array expressions (they use SSE/AVX/NEON, square root
+///      included, which a plain loop only gets with -fno-math-errno);
 ///   3. the representative of the normal's direction in the bins
 ///      (`Bin_layout::representative()`), in a loop without branches that
 ///      the compiler vectorizes;
@@ -55,7 +55,7 @@ public:
   /// `bin(i)`, `no_plane` when it is degenerate, and unit normal
   /// `normal(i)`, oriented by `Bin_layout::bin_and_sign()`.
   void compute(const std::vector<Eigen::Vector3f>& points, const Triple* triples, std::size_t count,
-                      const Bin_layout& layout)
+               const Bin_layout& layout)
   {
     typedef Eigen::Map<Eigen::ArrayXf, Eigen::Aligned16> Array;
     // 1. Edges.
