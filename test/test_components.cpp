@@ -263,26 +263,102 @@ TEST_CASE("Eq. 10: disjoint confidence intervals of the two most voted bins", "[
   CHECK(!confidence_intervals_are_disjoint(0, 0, 0));
 }
 
-TEST_CASE("Eq. 10 cannot hold before the number of votes the batches are cut at", "[stopping]")
+TEST_CASE("Eq. 10 cannot hold while the most voted bin has fewer than 2 sqrt(T) votes", "[stopping]")
 {
-  // Exhaustively for small counts: d is the least number of votes after
-  // which some sequence of votes passes the test, and no sequence passes it
-  // sooner (the gap grows by at most one per vote, and does so when every
-  // vote goes to the first bin).
+  // Exhaustively for small counts: whenever the test holds, the necessary
+  // condition the accumulator waits for holds too, and it is tight (one
+  // bin with all the votes passes the test as soon as it holds).
   for(std::size_t votes = 0; votes <= 300; ++votes)
+  {
     for(std::size_t first = 0; first <= votes; ++first)
       for(std::size_t second = 0; second <= (std::min)(first, votes - first); ++second)
-      {
         if(confidence_intervals_are_disjoint(first, second, votes))
-          continue;
-        const std::size_t d = votes_before_intervals_can_be_disjoint(first, second, votes);
-        INFO(first << " " << second << " of " << votes << ": d = " << d);
-        REQUIRE(d >= 1);
-        REQUIRE(confidence_intervals_are_disjoint(first + d, second, votes + d));
-        REQUIRE(!confidence_intervals_are_disjoint(first + d - 1, second, votes + d - 1));
+        {
+          INFO(first << " " << second << " of " << votes);
+          REQUIRE(confidence_intervals_can_be_disjoint(first, votes));
+        }
+    if(votes > 0)
+      REQUIRE(confidence_intervals_can_be_disjoint(votes, votes) == confidence_intervals_are_disjoint(votes, 0, votes));
+  }
+  CHECK(!confidence_intervals_can_be_disjoint(34, 300)); // 34^2 = 1156 < 1200
+  CHECK(confidence_intervals_can_be_disjoint(35, 300));  // 1225 >= 1200
+}
+
+namespace {
+// Planes given by their bins only, in the interface of Plane_batch.
+struct Bins_of_planes
+{
+  static constexpr std::uint32_t no_plane = Plane_batch::no_plane;
+  std::vector<std::uint32_t> bins;
+  std::uint32_t bin(std::size_t i) const { return bins[i]; }
+  Eigen::Vector3d normal(std::size_t) const { return Eigen::Vector3d(0, 0, 1); }
+};
+} // namespace
+
+TEST_CASE("The accumulator stops at the vote at which eq. 10 first holds, whatever the batches", "[accumulator]")
+{
+  // Votes of planes of random bins, skewed towards a few, given in batches
+  // of random sizes: the accumulator calls the test at every vote at which
+  // it can hold, and its two most voted bins are those of a plain count.
+  const Bin_layout layout(15);
+  Accumulator accumulator(layout);
+  typedef Bins_of_planes Planes;
+  Random rng(5, 6);
+  std::size_t stopped_early = 0;
+  for(int run = 0; run < 300; ++run)
+  {
+    accumulator.clear();
+    std::vector<unsigned int> count(layout.size(), 0);
+    const std::uint32_t spread = 2 + rng.uniform_index(40), skew = rng.uniform_index(4); // skew / 8 of the votes to bin 0
+    std::size_t votes = 0, stop_at = 0;
+    bool stopped = false;
+    while(!stopped && votes < 700)
+    {
+      Planes planes;
+      const std::size_t size = 1 + rng.uniform_index(64);
+      for(std::size_t i = 0; i < size; ++i)
+      {
+        const std::uint32_t kind = rng.uniform_index(8);
+        planes.bins.push_back(kind == 7 ? Planes::no_plane : kind < skew ? 0 : rng.uniform_index(spread));
       }
-  CHECK(votes_before_intervals_can_be_disjoint(0, 0, 0) == 4);       // 4 votes for one bin: 4^2 >= 4 * 4
-  CHECK(votes_before_intervals_can_be_disjoint(30, 25, 300) == 32);  // (5 + 32)^2 = 1369 >= 4 * 332
+      std::size_t tests = 0;
+      const std::size_t looked_at = accumulator.vote(planes, size, [&](unsigned int first, unsigned int second, std::size_t n) {
+        ++tests;
+        return stopped = confidence_intervals_are_disjoint(first, second, n);
+      });
+      // The same votes, counted plainly.
+      for(std::size_t i = 0; i < looked_at; ++i)
+      {
+        if(planes.bins[i] == Planes::no_plane)
+          continue;
+        ++count[planes.bins[i]];
+        ++votes;
+        const unsigned int first = *std::max_element(count.begin(), count.end());
+        std::vector<unsigned int> others = count;
+        others.erase(std::max_element(others.begin(), others.end()));
+        const unsigned int second = *std::max_element(others.begin(), others.end());
+        if(stop_at == 0 && confidence_intervals_are_disjoint(first, second, votes))
+          stop_at = votes;
+      }
+      REQUIRE(tests <= looked_at);
+      REQUIRE(accumulator.number_of_votes() == votes);
+      const unsigned int first = *std::max_element(count.begin(), count.end());
+      REQUIRE(accumulator.votes_of_most_voted_bin() == first);
+      REQUIRE(count[accumulator.most_voted_bin()] == first);
+      std::vector<unsigned int> others = count;
+      others.erase(others.begin() + std::ptrdiff_t(accumulator.most_voted_bin()));
+      REQUIRE(accumulator.votes_of_second_most_voted_bin() == *std::max_element(others.begin(), others.end()));
+    }
+    // It stopped exactly at the first vote at which eq. 10 held.
+    REQUIRE(stopped == (stop_at != 0));
+    if(stopped)
+    {
+      REQUIRE(votes == stop_at);
+      ++stopped_early;
+    }
+  }
+  CHECK(stopped_early > 100); // both outcomes are tested
+  CHECK(stopped_early < 250);
 }
 
 TEST_CASE("Random streams depend only on the seed and the stream number", "[random]")

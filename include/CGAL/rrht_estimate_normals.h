@@ -91,13 +91,12 @@ struct Scratch
 /// give no direction in single precision (see `Plane_batch`).
 ///
 /// Triples are drawn, and their planes computed (`Plane_batch`), in
-/// batches; they vote one by one, and eq. 10 is tested after each vote from
-/// the first at which it can hold (`votes_before_intervals_can_be_disjoint()`),
-/// so the run stops at the same vote as when drawing one triple at a time.
-/// A batch is as large as that number of votes, or half the votes so far
-/// plus 8 when that is larger: a run of 300 planes that does not stop early
-/// takes 9 batches rather than 20, and a run that stops wastes at most that
-/// many planes, drawn and not voted.
+/// batches; they vote one by one, and eq. 10 is tested after each vote at
+/// which it can hold (see `Accumulator`), so the run stops at the same vote
+/// as when drawing one triple at a time. A batch is half the votes so far
+/// plus 8 (at most `Plane_batch::capacity`, which it is without eq. 10): a run of 300 planes that does not stop early takes 9 batches
+/// rather than 20, and a run that stops wastes at most that many planes,
+/// drawn and not voted.
 template <typename Sampler>
 Candidate_normal hough_transform(const std::vector<Eigen::Vector3f>& points, Sampler& sampler, Random& rng,
                                  const Settings& settings, Scratch& scratch)
@@ -109,23 +108,13 @@ Candidate_normal hough_transform(const std::vector<Eigen::Vector3f>& points, Sam
   bool stop = false;
   while(!stop && drawn < settings.number_of_planes)
   {
-    // Votes of this batch before which eq. 10 cannot hold (none tested).
-    std::size_t untested = settings.number_of_planes;
-    if(settings.use_confidence_interval)
-      untested = votes_before_intervals_can_be_disjoint(accumulator.votes_of_most_voted_bin(),
-                                                        accumulator.votes_of_second_most_voted_bin(),
-                                                        accumulator.number_of_votes()) - 1;
-    const std::size_t wanted = (std::min)({ settings.number_of_planes - drawn, scratch.triples.size(),
-                                            (std::max)(untested + 1, accumulator.number_of_votes() / 2 + 8) });
+    const std::size_t batch =
+      settings.use_confidence_interval ? accumulator.number_of_votes() / 2 + 8 : scratch.triples.size();
+    const std::size_t wanted = (std::min)({ settings.number_of_planes - drawn, scratch.triples.size(), batch });
     const std::size_t got = sampler.draw(rng, wanted, scratch.triples.data());
     scratch.planes.compute(points, scratch.triples.data(), got, accumulator.layout());
     accumulator.vote(scratch.planes, got, [&](unsigned int first, unsigned int second, std::size_t votes) {
-      if(untested > 0)
-      {
-        --untested;
-        return false;
-      }
-      return stop = confidence_intervals_are_disjoint(first, second, votes);
+      return stop = settings.use_confidence_interval && confidence_intervals_are_disjoint(first, second, votes);
     });
     drawn += got;
     stop |= (got < wanted); // every triple of the neighborhood has voted

@@ -66,7 +66,7 @@ public:
     while((std::size_t(1) << m_filter_bits_log2) < 32 * max_draws && m_filter_bits_log2 < 32)
       ++m_filter_bits_log2;
     m_filter.resize((std::size_t(1) << m_filter_bits_log2) / 64);
-    m_keys.reserve(max_draws);
+    m_keys.resize(max_draws);
     for(std::int32_t i = 0; i < 3; ++i)
       m_rejection_threshold[i] = (n <= small_limit) ? std::int32_t((1u << 16) % (n - i)) : 0;
   }
@@ -77,7 +77,7 @@ public:
     if(!m_enumerate)
     {
       std::fill(m_filter.begin(), m_filter.end(), std::uint64_t(0));
-      m_keys.clear();
+      m_drawn = 0;
     }
   }
 
@@ -216,10 +216,10 @@ private:
     const std::uint32_t bit = hash >> (32 - m_filter_bits_log2);
     std::uint64_t& word = m_filter[bit >> 6];
     const std::uint64_t mask = std::uint64_t(1) << (bit & 63u);
-    if((word & mask) != 0 && std::find(m_keys.begin(), m_keys.end(), k) != m_keys.end())
+    if((word & mask) != 0 && std::find(m_keys.begin(), m_keys.begin() + m_drawn, k) != m_keys.begin() + m_drawn)
       return false;
     word |= mask;
-    m_keys.push_back(k);
+    m_keys[m_drawn++] = k;
     return true;
   }
   std::uint32_t m_n = 0;
@@ -234,7 +234,8 @@ private:
   std::uint32_t m_low_bits[chunk], m_high_bits[chunk];
   std::int32_t m_first[chunk], m_middle[chunk], m_last[chunk], m_accepted[chunk];
   std::uint32_t m_hash[chunk];
-  std::vector<std::uint64_t> m_keys;   // this run's triples
+  std::vector<std::uint64_t> m_keys;   // this run's triples: the first m_drawn
+  std::size_t m_drawn = 0;
   std::vector<std::uint64_t> m_filter; // and their bits
   unsigned int m_filter_bits_log2 = 6;
   std::int32_t m_rejection_threshold[3] = { 0, 0, 0 };

@@ -6,7 +6,6 @@
 #ifndef CGAL_RRHT_STOPPING_RULES_H
 #define CGAL_RRHT_STOPPING_RULES_H
 
-#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <stdexcept>
@@ -42,27 +41,12 @@ inline bool confidence_intervals_are_disjoint(std::size_t votes_first, std::size
   return gap * gap >= 4 * number_of_planes;
 }
 
-/// The least number d >= 1 of further votes after which the test of eq. 10
-/// can hold, when it does not hold now: a vote raises one bin by one, so it
-/// widens the gap between the two most voted bins by at most one, and the
-/// test fails until (gap + d)^2 >= 4 (number_of_planes + d), that is until
-///   d >= 2 - gap + 2 sqrt(1 - gap + number_of_planes).
-/// Testing only after that many votes stops at the same vote as testing
-/// after every vote (RRHT draws in batches of that size).
-inline std::size_t votes_before_intervals_can_be_disjoint(std::size_t votes_first, std::size_t votes_second,
-                                                          std::size_t number_of_planes)
+/// Whether eq. 10 can hold when the most voted bin has `votes_first` of
+/// `number_of_planes` votes: not while votes_first < 2 sqrt(T), since
+///   (votes_first - votes_second)^2 <= votes_first^2 < 4 T.
+inline bool confidence_intervals_can_be_disjoint(std::size_t votes_first, std::size_t number_of_planes)
 {
-  const std::size_t gap = votes_first > votes_second ? votes_first - votes_second : 0;
-  const double root = 2. - double(gap) + 2. * std::sqrt((std::max)(0., 1. - double(gap) + double(number_of_planes)));
-  std::size_t d = root > 1 ? static_cast<std::size_t>(root) : 1;
-  auto can_hold = [&](std::size_t votes) {
-    return (gap + votes) * (gap + votes) >= 4 * (number_of_planes + votes);
-  };
-  while(d > 1 && can_hold(d - 1)) // the square root was rounded up
-    --d;
-  while(!can_hold(d))             // or down
-    ++d;
-  return d;
+  return votes_first * votes_first >= 4 * number_of_planes;
 }
 
 } // namespace RRHT
