@@ -95,12 +95,14 @@ public:
       }
       return count;
     }
+    Drawn_set drawn{ m_keys.data(), m_filter.data(), 32 - m_filter_bits_log2, m_drawn };
     if(m_n > small_limit)
     {
       for(std::size_t i = 0; i < count; ++i)
         do
           out[i] = draw_triple(rng);
-        while(!insert(key(out[i])));
+        while(!drawn.insert(key(out[i])));
+      m_drawn = drawn.size;
       return count;
     }
     // Two passes over chunks of the batch: the candidate triples, in a
@@ -117,11 +119,12 @@ public:
         for(std::size_t i = kept, end = size; i < end; ++i)
         {
           const Triple t = {{ std::uint32_t(m_first[i]), std::uint32_t(m_middle[i]), std::uint32_t(m_last[i]) }};
-          if(m_accepted[i] != 0 && insert(key(t), m_hash[i]))
+          if(m_accepted[i] != 0 && drawn.insert(exact_key(t), m_hash[i]))
             chunk_out[kept++] = t;
         }
       }
     }
+    m_drawn = drawn.size;
     return count;
   }
 
@@ -196,32 +199,49 @@ private:
     return t;
   }
 
+  // The triple itself, when its indices fit in 21 bits.
+  static std::uint64_t exact_key(const Triple& t)
+  {
+    return std::uint64_t(t[0]) | (std::uint64_t(t[1]) << 21) | (std::uint64_t(t[2]) << 42);
+  }
+
   // The exact triple when indices fit in 21 bits, else a 64-bit mix of it: two
   // draws of one triple always have the same key, so a repeat is never let
   // through (a rare collision of two different triples only costs a redraw).
   static std::uint64_t key(const Triple& t)
   {
     if(t[2] < Random::bits21_limit)
-      return std::uint64_t(t[0]) | (std::uint64_t(t[1]) << 21) | (std::uint64_t(t[2]) << 42);
+      return exact_key(t);
     Random mixer(t[0] | (std::uint64_t(t[1]) << 32), t[2]);
     return mixer();
   }
 
-  // Inserts `k` in this run's set; false if it was there already. `hash`
-  // picks the bit of the filter.
-  bool insert(std::uint64_t k) { return insert(k, std::uint32_t((k * 0x9E3779B97F4A7C15ull) >> 32)); }
-
-  bool insert(std::uint64_t k, std::uint32_t hash)
+  // This run's triples (their keys) and their filter, for one batch, in
+  // local variables: the stores to the triples and to the filter could
+  // otherwise alias the members, which the compiler would reload after each.
+  struct Drawn_set
   {
-    const std::uint32_t bit = hash >> (32 - m_filter_bits_log2);
-    std::uint64_t& word = m_filter[bit >> 6];
-    const std::uint64_t mask = std::uint64_t(1) << (bit & 63u);
-    if((word & mask) != 0 && std::find(m_keys.begin(), m_keys.begin() + m_drawn, k) != m_keys.begin() + m_drawn)
-      return false;
-    word |= mask;
-    m_keys[m_drawn++] = k;
-    return true;
-  }
+    std::uint64_t* keys;
+    std::uint64_t* filter;
+    unsigned int shift; // 32 - log2 of the filter's bits
+    std::size_t size;
+
+    // Inserts `k`; false if it was there already. `hash` picks the bit of the filter.
+    bool insert(std::uint64_t k, std::uint32_t hash)
+    {
+      const std::uint32_t bit = hash >> shift;
+      std::uint64_t& word = filter[bit >> 6];
+      const std::uint64_t mask = std::uint64_t(1) << (bit & 63u);
+      if((word & mask) != 0 && std::find(keys, keys + size, k) != keys + size)
+        return false;
+      word |= mask;
+      keys[size++] = k;
+      return true;
+    }
+
+    bool insert(std::uint64_t k) { return insert(k, std::uint32_t((k * 0x9E3779B97F4A7C15ull) >> 32)); }
+  };
+
   std::uint32_t m_n = 0;
   bool m_enumerate = true;
   std::vector<Triple> m_all;
