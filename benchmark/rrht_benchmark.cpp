@@ -83,6 +83,48 @@ public:
     return m;
   }
 
+  /// A measurement for `run_in_rounds()`.
+  struct Planned
+  {
+    const Dataset* dataset;
+    Estimator estimator;
+    unsigned int threads;
+  };
+
+  /// Measures each of `planned` as many times as `run_with()` does, but in
+  /// rounds: each round runs each of them once, in order, so that a drift
+  /// of the machine's speed during the experiment (10-25% over minutes on
+  /// this shared 2-core machine) weighs on all of them alike. Run k of each
+  /// measurement is from round k, so two measurements can be compared round
+  /// by round (`Targets::add()`). A measurement that fails is not run again.
+  std::vector<Measurement> run_in_rounds(const std::vector<Planned>& planned)
+  {
+    std::vector<Measurement> all(planned.size());
+    for(int round = 0; round < config_.runs; ++round)
+      for(std::size_t i = 0; i < planned.size(); ++i)
+      {
+        if(round > 0 && all[i].status != Measurement::OK)
+          continue;
+        const Measurement m = measure(planned[i].estimator.estimate, planned[i].dataset->cloud, planned[i].threads, 1,
+                                      config_.timeout);
+        if(round == 0)
+          all[i] = m;
+        else if(m.status != Measurement::OK)
+        {
+          all[i].status = m.status;
+          all[i].message = m.message;
+        }
+        else
+        {
+          all[i].seconds.push_back(m.seconds.front());
+          all[i].peak_mib = (std::max)(all[i].peak_mib, m.peak_mib);
+        }
+      }
+    for(std::size_t i = 0; i < planned.size(); ++i)
+      write(*planned[i].dataset, planned[i].estimator, planned[i].threads, all[i]);
+    return all;
+  }
+
 private:
   void write(const Dataset& d, const Estimator& e, unsigned int threads, const Measurement& m)
   {
@@ -369,7 +411,8 @@ void scans(const Config& config)
 }
 
 // -- The performance targets (issue 5): each a ratio of two measurements
-// of this run, printed at the end and written to targets_ratios.csv.
+// of this run, taken in rounds (times: the median of the ratios round by
+// round), printed at the end and written to targets_ratios.csv.
 class Targets
 {
 public:
@@ -381,6 +424,20 @@ public:
   {
     const bool valid = numerator > 0 && denominator > 0;
     rows_.push_back(Row{ what, valid ? numerator / denominator : 0., target, at_least, valid });
+  }
+
+  /// The time of `numerator` over that of `denominator`, measured in the
+  /// same rounds (`Experiment::run_in_rounds()`): the median of the ratios
+  /// of their runs round by round.
+  void add(const std::string& what, const Measurement& numerator, const Measurement& denominator, double target,
+           bool at_least = false)
+  {
+    Measurement ratios;
+    const bool valid = numerator.status == Measurement::OK && denominator.status == Measurement::OK &&
+                       numerator.seconds.size() == denominator.seconds.size();
+    for(std::size_t k = 0; valid && k < numerator.seconds.size(); ++k)
+      ratios.seconds.push_back(numerator.seconds[k] / denominator.seconds[k]);
+    add(what, valid ? ratios.median() : 0., 1., target, at_least);
   }
 
   void print_and_write() const
@@ -418,29 +475,36 @@ void targets(const Config& config)
   const Estimator fast = rrht(Rrht_setting::fast(), rrht_k), precise = rrht(Rrht_setting::precise(), rrht_k);
   const Estimator jet80 = jet(paper_k), queries = neighbor_queries(rrht_k);
 
-  // The 100k-point cube with 0.2% noise.
+  // The 100k-point cube with 0.2% noise and the 1M-point sphere with 0.2%
+  // noise, measured in rounds.
   const Dataset c = synthetic("cube", cube, 100000, 0.2, 30);
-  const Measurement jet_2 = x.run_with(c, jet80, 2), queries_2 = x.run_with(c, queries, 2);
-  const Measurement fast_1 = x.run_with(c, fast, 1), fast_2 = x.run_with(c, fast, 2);
-  const Measurement precise_1 = x.run_with(c, precise, 1), precise_2 = x.run_with(c, precise, 2);
-  const Measurement cubes_2 = x.run_with(c, rrht(Rrht_setting::fast(Sampling::CUBES), rrht_k), 2);
-  const Measurement unif_2 = x.run_with(c, rrht(Rrht_setting::fast(Sampling::UNIF), rrht_k), 2);
-  t.add("cube 100k, 2 threads: fast / jet_K80", fast_2.median(), jet_2.median(), 0.5);
-  t.add("cube 100k, 2 threads: precise (defaults) / jet_K80", precise_2.median(), jet_2.median(), 1.5);
-  t.add("cube 100k, 2 threads: fast / its bare K=100 queries", fast_2.median(), queries_2.median(), 2.5);
-  t.add("cube 100k: fast, 1 thread / 2 threads (speed-up)", fast_1.median(), fast_2.median(), 1.85, true);
-  t.add("cube 100k: precise, 1 thread / 2 threads (speed-up)", precise_1.median(), precise_2.median(), 1.85, true);
-  t.add("cube 100k, 2 threads, fast setting: Cubes / Points", cubes_2.median(), fast_2.median(), 1.3);
-  t.add("cube 100k, 2 threads, fast setting: Unif / Points", unif_2.median(), fast_2.median(), 3);
-
-  // The 1M-point sphere with 0.2% noise. The output is 3 doubles per point.
   const std::size_t n = 1000000;
   const Dataset s = synthetic("sphere", sphere, n, 0.2, 31);
-  const Measurement jet_s = x.run_with(s, jet80, 2), fast_s = x.run_with(s, fast, 2);
-  const Measurement queries_s = x.run_with(s, queries, 2);
+  const std::vector<Measurement> m = x.run_in_rounds({ { &c, jet80, 2 },
+                                                       { &c, queries, 2 },
+                                                       { &c, fast, 1 },
+                                                       { &c, fast, 2 },
+                                                       { &c, precise, 1 },
+                                                       { &c, precise, 2 },
+                                                       { &c, rrht(Rrht_setting::fast(Sampling::CUBES), rrht_k), 2 },
+                                                       { &c, rrht(Rrht_setting::fast(Sampling::UNIF), rrht_k), 2 },
+                                                       { &s, jet80, 2 },
+                                                       { &s, fast, 2 },
+                                                       { &s, queries, 2 } });
+  const Measurement &jet_2 = m[0], &queries_2 = m[1], &fast_1 = m[2], &fast_2 = m[3], &precise_1 = m[4],
+                    &precise_2 = m[5], &cubes_2 = m[6], &unif_2 = m[7], &jet_s = m[8], &fast_s = m[9],
+                    &queries_s = m[10];
+  t.add("cube 100k, 2 threads: fast / jet_K80", fast_2, jet_2, 0.5);
+  t.add("cube 100k, 2 threads: precise (defaults) / jet_K80", precise_2, jet_2, 1.5);
+  t.add("cube 100k, 2 threads: fast / its bare K=100 queries", fast_2, queries_2, 2.5);
+  t.add("cube 100k: fast, 1 thread / 2 threads (speed-up)", fast_1, fast_2, 1.85, true);
+  t.add("cube 100k: precise, 1 thread / 2 threads (speed-up)", precise_1, precise_2, 1.85, true);
+  t.add("cube 100k, 2 threads, fast setting: Cubes / Points", cubes_2, fast_2, 1.3);
+  t.add("cube 100k, 2 threads, fast setting: Unif / Points", unif_2, fast_2, 3);
+  // The output is 3 doubles per point.
   const double output_mib = n * 3 * sizeof(double) / (1024. * 1024.);
-  t.add("sphere 1M, 2 threads: fast / jet_K80", fast_s.median(), jet_s.median(), 0.4);
-  t.add("sphere 1M, 2 threads: fast / its bare K=100 queries", fast_s.median(), queries_s.median(), 2.5);
+  t.add("sphere 1M, 2 threads: fast / jet_K80", fast_s, jet_s, 0.4);
+  t.add("sphere 1M, 2 threads: fast / its bare K=100 queries", fast_s, queries_s, 2.5);
   t.add("sphere 1M, 2 threads: fast peak memory / (jet_K80 peak + output)", fast_s.peak_mib,
         jet_s.peak_mib + output_mib, 1);
   t.print_and_write();
