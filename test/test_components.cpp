@@ -519,6 +519,56 @@ TEST_CASE("RRHT_Cubes and RRHT_Unif draw points uniformly in space, not among po
   }
 }
 
+TEST_CASE("RRHT_Cubes draws each point with the weight of its cube over the points of the cube", "[sampling]")
+{
+  // 40 points spread over a few cubes of the unit ball, unevenly: point p of
+  // cube C has probability w(C) / (W |C|), W the weight of the cubes that
+  // hold points. Each frequency over 10^6 draws is within 6 sigma of it.
+  std::vector<Eigen::Vector3d> points;
+  Random rng(11, 12);
+  for(int i = 0; i < 40; ++i)
+  {
+    const double spread = (i < 25) ? 0.2 : 0.9; // a dense cluster and sparse points
+    Eigen::Vector3d p;
+    do
+      p = Eigen::Vector3d(rng.uniform_real(), rng.uniform_real(), rng.uniform_real()) * 2 * spread -
+          Eigen::Vector3d::Constant(spread);
+    while(p.norm() > 1);
+    points.push_back(p);
+  }
+  const unsigned int c = 4;
+  const Cube_weights weights(c);
+  Cubes_sampler cubes(weights);
+  cubes.prepare(points, 1.0);
+
+  auto cube_of = [&](const Eigen::Vector3d& p) {
+    std::size_t index = 0;
+    for(int d = 0; d < 3; ++d)
+      index = index * c + std::size_t((std::min)(c - 1., std::floor((p[d] + 1) / (2. / c))));
+    return index;
+  };
+  std::map<std::size_t, int> points_of_cube;
+  for(const Eigen::Vector3d& p : points)
+    ++points_of_cube[cube_of(p)];
+  double total = 0;
+  for(const auto& cube : points_of_cube)
+    total += weights.weight(cube.first);
+  REQUIRE(points_of_cube.size() > 5);
+
+  const int draws = 1000000;
+  std::vector<int> count(points.size(), 0);
+  for(int i = 0; i < draws; ++i)
+    ++count[cubes.draw_point(rng)];
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    const std::size_t cube = cube_of(points[i]);
+    const double probability = weights.weight(cube) / (total * points_of_cube[cube]);
+    const double sigma = std::sqrt(draws * probability * (1 - probability));
+    INFO("point " << i << " of cube " << cube << ": " << count[i] << " draws, expected " << draws * probability);
+    REQUIRE(std::abs(count[i] - draws * probability) <= 6 * sigma);
+  }
+}
+
 TEST_CASE("Cube weights are the volume of the cubes inside the ball", "[sampling]")
 {
   for(unsigned int c : { 1u, 2u, 4u, 7u })
