@@ -447,19 +447,31 @@ private:
     std::size_t votes;
   };
 
+  // Adds the vote to bin b; returns the bin's votes.
+  unsigned int add_to_bin(std::size_t b, const Vector& unit, Top_two& top)
+  {
+    Bin& bin = m_bins[b];
+    bin.sum += unit;
+    ++top.votes;
+    return ++bin.votes;
+  }
+
+  // Votes grow by one, so b, now with `votes` votes, is (or stays) the first
+  // when it passes the first's votes. A mask rather than a branch: whether a
+  // plane votes for the first bin is random (GCC makes branches of
+  // conditional operators here).
+  static void follow_first(std::size_t b, unsigned int votes, Top_two& top)
+  {
+    const std::size_t first_mask = 0 - std::size_t(votes > top.first_votes);
+    top.first = (b & first_mask) | (top.first & ~first_mask);
+    top.first_votes = (std::max)(top.first_votes, votes);
+  }
+
   // A vote while only the most voted bin is followed; returns whether eq. 10
   // can now hold.
   bool add_vote_to_most_voted(std::size_t b, const Vector& unit, Top_two& top)
   {
-    Bin& bin = m_bins[b];
-    bin.sum += unit;
-    const unsigned int votes = ++bin.votes;
-    ++top.votes;
-    // Votes grow by one, so b is (or stays) the first when it passes the
-    // first's votes. A mask rather than a branch, as in add_vote().
-    const std::size_t first_mask = 0 - std::size_t(votes > top.first_votes);
-    top.first = (b & first_mask) | (top.first & ~first_mask);
-    top.first_votes = (std::max)(top.first_votes, votes);
+    follow_first(b, add_to_bin(b, unit, top), top);
     return confidence_intervals_can_be_disjoint(top.first_votes, top.votes);
   }
 
@@ -479,25 +491,17 @@ private:
     m_ranked = true;
   }
 
-  // A vote while both most voted bins are followed. Votes only grow by
-  // one, so they follow incrementally: b becomes the first when it passes
-  // the first's votes, and the first's votes are then the second's; else the
-  // second's votes are the most of theirs and of b's (if b is not the
-  // first). Which bin is second does not matter. Whether a plane votes for
-  // the first bin is random, so the choices are made with masks, minima and
-  // maxima rather than branches (which GCC makes of conditional operators).
+  // A vote while both most voted bins are followed. When b becomes the
+  // first, the first's votes are then the second's; else the second's votes
+  // are the most of theirs and of b's (if b is not the first). Which bin is
+  // second does not matter. A minimum, a maximum and a mask rather than
+  // branches, as in follow_first().
   void add_vote(std::size_t b, const Vector& unit, Top_two& top)
   {
-    Bin& bin = m_bins[b];
-    bin.sum += unit;
-    const unsigned int votes = ++bin.votes;
-    ++top.votes;
-    const bool is_first = (b == top.first);
-    const unsigned int not_first_mask = 0u - unsigned(!is_first);
+    const unsigned int votes = add_to_bin(b, unit, top);
+    const unsigned int not_first_mask = 0u - unsigned(b != top.first);
     top.second_votes = (std::max)(top.second_votes, (std::min)(votes, top.first_votes) & not_first_mask);
-    const std::size_t first_mask = 0 - std::size_t(votes > top.first_votes);
-    top.first = (b & first_mask) | (top.first & ~first_mask);
-    top.first_votes = (std::max)(top.first_votes, votes);
+    follow_first(b, votes, top);
   }
 
   // The votes of a bin next to the sum of their normals: one cache line per vote.
