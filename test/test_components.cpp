@@ -215,6 +215,73 @@ TEST_CASE("Plane_batch: unit normals and bins of the planes of a batch, degenera
   }
 }
 
+TEST_CASE("The AVX2 loops give the same planes and triples as the baseline ones, bit for bit", "[accumulator][sampling]")
+{
+  if(best_instruction_set() != Instruction_set::avx2)
+  {
+    WARN("this build or processor has no AVX2 loops: nothing to compare");
+    return;
+  }
+  Random rng(14, 0);
+  std::vector<Eigen::Vector3f> points;
+  for(int i = 0; i < 101; ++i)
+    points.push_back(random_direction(rng).cast<float>() * float(rng.uniform_real()));
+  points.emplace_back(0.f, 0.f, 0.f); // collinear with points 1, 2 and 3 times 0.5
+  points.emplace_back(points[1] * 0.5f);
+  Plane_batch baseline(Instruction_set::baseline), avx2(Instruction_set::avx2);
+  std::size_t compared = 0;
+  for(unsigned int slices : { 1u, 6u, 15u, 25u })
+  {
+    const Bin_layout layout(slices);
+    for(int round = 0; round < 200; ++round)
+    {
+      // Every count, so that every tail of the vectorized loops is run.
+      const std::size_t count = 1 + std::size_t(round) % Plane_batch::capacity;
+      std::vector<Triple> triples;
+      for(std::size_t i = 0; i < count; ++i)
+        triples.push_back(Triple{{ rng.uniform_index(103), rng.uniform_index(103), rng.uniform_index(103) }});
+      triples.back() = Triple{{ 101, 102, 1 }};
+      baseline.compute(points, triples.data(), count, layout);
+      avx2.compute(points, triples.data(), count, layout);
+      for(std::size_t i = 0; i < count; ++i)
+      {
+        INFO("n_phi = " << slices << ", plane " << i << " of " << count);
+        REQUIRE(baseline.bin(i) == avx2.bin(i));
+        if(baseline.bin(i) != Plane_batch::no_plane) // else no normal
+        {
+          REQUIRE(baseline.normal(i) == avx2.normal(i));
+          ++compared;
+        }
+      }
+    }
+  }
+  CHECK(compared > 20000);
+  for(std::uint32_t n : { 5u, 20u, 101u, 4096u })
+  {
+    Points_sampler baseline_sampler(Instruction_set::baseline), avx2_sampler(Instruction_set::avx2);
+    baseline_sampler.prepare(n, 300);
+    avx2_sampler.prepare(n, 300);
+    Random baseline_rng(15, n), avx2_rng(15, n);
+    for(int run = 0; run < 20; ++run)
+    {
+      baseline_sampler.start_run();
+      avx2_sampler.start_run();
+      Triple baseline_triples[64], avx2_triples[64];
+      for(std::size_t drawn = 0, count = 1; drawn < 300; drawn += count, count = count % 64 + 7)
+      {
+        const std::size_t wanted = (std::min)(count, std::size_t(300) - drawn);
+        const std::size_t got = baseline_sampler.draw(baseline_rng, wanted, baseline_triples);
+        REQUIRE(avx2_sampler.draw(avx2_rng, wanted, avx2_triples) == got);
+        for(std::size_t i = 0; i < got; ++i)
+        {
+          INFO("n = " << n << ", run " << run << ", triple " << drawn + i);
+          REQUIRE(baseline_triples[i] == avx2_triples[i]);
+        }
+      }
+    }
+  }
+}
+
 TEST_CASE("The accumulator keeps the two most voted bins and the mean normal of the first", "[accumulator]")
 {
   const Bin_layout layout(15);

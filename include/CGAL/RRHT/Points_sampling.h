@@ -7,6 +7,7 @@
 #ifndef CGAL_RRHT_POINTS_SAMPLING_H
 #define CGAL_RRHT_POINTS_SAMPLING_H
 
+#include <CGAL/RRHT/Instruction_set.h>
 #include <CGAL/RRHT/Random.h>
 
 #include <algorithm>
@@ -46,7 +47,9 @@ typedef std::array<std::uint32_t, 3> Triple;
 /// the sampling mode. When n <= 2^12 (`small_limit`), a triple costs one
 /// 64-bit random word (three 16-bit numbers), and is computed in a
 /// vectorized loop without branches (see `draw_candidates()`): this loop
-/// runs for every plane of the RRHT. Larger neighborhoods draw three
+/// runs for every plane of the RRHT, and also has an AVX2 version, taken
+/// when the processor has it (`Instruction_set.h`), which draws the same
+/// triples. Larger neighborhoods draw three
 /// numbers with `Random::uniform_index()`.
 ///
 /// Memory, kept from one point to the next: 12 bytes per triple in the first
@@ -55,6 +58,12 @@ typedef std::array<std::uint32_t, 3> Triple;
 class Points_sampler
 {
 public:
+  /// Draws with the loops of `instruction_set` (the triples are the same
+  /// with each, see `Instruction_set.h`).
+  explicit Points_sampler(Instruction_set instruction_set = best_instruction_set())
+    : m_instruction_set(instruction_set)
+  {}
+
   void prepare(std::uint32_t n, std::size_t max_draws)
   {
     m_n = n;
@@ -169,6 +178,22 @@ private:
   // points).
   void draw_candidates(Random& rng, std::size_t begin, std::size_t end)
   {
+#if CGAL_RRHT_AVX2_KERNELS
+    if(m_instruction_set == Instruction_set::avx2)
+      return draw_candidates_avx2(rng, begin, end);
+#endif
+    compute_candidates(rng, begin, end);
+  }
+
+#if CGAL_RRHT_AVX2_KERNELS
+  CGAL_RRHT_TARGET_AVX2 void draw_candidates_avx2(Random& rng, std::size_t begin, std::size_t end)
+  {
+    compute_candidates(rng, begin, end);
+  }
+#endif
+
+  CGAL_RRHT_ALWAYS_INLINE void compute_candidates(Random& rng, std::size_t begin, std::size_t end)
+  {
     for(std::size_t i = begin; i < end; ++i)
     {
       const std::uint64_t word = rng();
@@ -250,6 +275,7 @@ private:
     bool insert(std::uint64_t k) { return insert(k, std::uint32_t((k * 0x9E3779B97F4A7C15ull) >> 32)); }
   };
 
+  Instruction_set m_instruction_set;
   std::uint32_t m_n = 0;
   bool m_enumerate = true;
   std::vector<Triple> m_all;
