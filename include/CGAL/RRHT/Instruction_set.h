@@ -21,9 +21,10 @@
 /// same bits (tested). Eigen's own vectorization, fixed when it is
 /// compiled, is the same in both.
 ///
-/// Measured at the fast setting on the 100k-point noisy cube, one thread:
-/// 1.77-1.84 s instead of 1.58-1.72 s (the min of 5 runs, three series), with
-/// the same normals.
+/// Measured at the fast setting on the noisy cube, one thread, against a
+/// build with `CGAL_RRHT_NO_AVX2_KERNELS`: 1.57 s instead of 1.71 s on 100k
+/// points (the min of 5 interleaved runs), 1.50e9 instead of 1.68e9
+/// instructions on 10k points (callgrind), with the same normals.
 ///
 /// GCC on x86-64 (the `target` attribute and `__builtin_cpu_supports()`),
 /// unless the build already targets AVX2 or `CGAL_RRHT_NO_AVX2_KERNELS` is
