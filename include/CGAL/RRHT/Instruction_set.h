@@ -46,7 +46,7 @@ namespace RRHT {
 enum class Instruction_set
 {
   baseline, ///< the target of the build
-  avx2      ///< AVX2, without FMA
+  avx2      ///< AVX2, without FMA: only where `best_instruction_set()` gives it
 };
 
 /// The widest of the instruction sets that this build has and this
