@@ -32,11 +32,8 @@
 #if !defined(CGAL_RRHT_NO_AVX2_KERNELS) && defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && \
     !defined(__AVX2__)
 #  define CGAL_RRHT_AVX2_KERNELS 1
-#  define CGAL_RRHT_TARGET_AVX2 __attribute__((target("avx2")))
-#  define CGAL_RRHT_ALWAYS_INLINE inline __attribute__((always_inline))
 #else
 #  define CGAL_RRHT_AVX2_KERNELS 0
-#  define CGAL_RRHT_ALWAYS_INLINE inline
 #endif
 
 namespace CGAL {
@@ -62,6 +59,30 @@ inline Instruction_set best_instruction_set()
 #else
   return Instruction_set::baseline;
 #endif
+}
+
+namespace internal {
+#if CGAL_RRHT_AVX2_KERNELS
+// `loop()` compiled for AVX2: `flatten` inlines it, and all it calls, here.
+template <typename Loop>
+__attribute__((target("avx2"), flatten)) void run_for_avx2(const Loop& loop)
+{
+  loop();
+}
+#endif
+} // namespace internal
+
+/// Runs `loop()`, a loop of `Points_sampler` or `Plane_batch`, compiled for
+/// `instruction_set`.
+template <typename Loop>
+void run_with(Instruction_set instruction_set, const Loop& loop)
+{
+#if CGAL_RRHT_AVX2_KERNELS
+  if(instruction_set == Instruction_set::avx2)
+    return internal::run_for_avx2(loop);
+#endif
+  (void)instruction_set;
+  loop();
 }
 
 } // namespace RRHT

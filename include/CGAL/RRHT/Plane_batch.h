@@ -71,11 +71,7 @@ public:
   void compute(const std::vector<Eigen::Vector3f>& points, const Triple* triples, std::size_t count,
                const Bin_layout& layout)
   {
-#if CGAL_RRHT_AVX2_KERNELS
-    if(m_instruction_set == Instruction_set::avx2)
-      return compute_avx2(points, triples, count, layout);
-#endif
-    compute_planes(points, triples, count, layout);
+    run_with(m_instruction_set, [&] { compute_planes(points, triples, count, layout); });
   }
 
   /// The bin of triple i, `no_plane` if its points define no plane.
@@ -87,16 +83,8 @@ public:
 private:
   typedef Eigen::Index Index;
 
-#if CGAL_RRHT_AVX2_KERNELS
-  CGAL_RRHT_TARGET_AVX2 void compute_avx2(const std::vector<Eigen::Vector3f>& points, const Triple* triples,
-                                          std::size_t count, const Bin_layout& layout)
-  {
-    compute_planes(points, triples, count, layout);
-  }
-#endif
-
-  // The four steps, inlined in the function of each instruction set.
-  CGAL_RRHT_ALWAYS_INLINE void compute_planes(const std::vector<Eigen::Vector3f>& points, const Triple* triples,
+  // The four steps.
+  void compute_planes(const std::vector<Eigen::Vector3f>& points, const Triple* triples,
                                               std::size_t count, const Bin_layout& layout)
   {
     typedef Eigen::Map<Eigen::ArrayXf, Eigen::Aligned16> Array;

@@ -178,21 +178,10 @@ private:
   // points).
   void draw_candidates(Random& rng, std::size_t begin, std::size_t end)
   {
-#if CGAL_RRHT_AVX2_KERNELS
-    if(m_instruction_set == Instruction_set::avx2)
-      return draw_candidates_avx2(rng, begin, end);
-#endif
-    compute_candidates(rng, begin, end);
+    run_with(m_instruction_set, [&] { compute_candidates(rng, begin, end); });
   }
 
-#if CGAL_RRHT_AVX2_KERNELS
-  CGAL_RRHT_TARGET_AVX2 void draw_candidates_avx2(Random& rng, std::size_t begin, std::size_t end)
-  {
-    compute_candidates(rng, begin, end);
-  }
-#endif
-
-  CGAL_RRHT_ALWAYS_INLINE void compute_candidates(Random& rng, std::size_t begin, std::size_t end)
+  void compute_candidates(Random& rng, std::size_t begin, std::size_t end)
   {
     for(std::size_t i = begin; i < end; ++i)
     {
