@@ -226,7 +226,7 @@ TEST_CASE("The AVX2 loops give the same planes and triples as the baseline ones,
   std::vector<Eigen::Vector3f> points;
   for(int i = 0; i < 101; ++i)
     points.push_back(random_direction(rng).cast<float>() * float(rng.uniform_real()));
-  points.emplace_back(0.f, 0.f, 0.f); // collinear with points 1, 2 and 3 times 0.5
+  points.emplace_back(0.f, 0.f, 0.f); // with half of point 1 and point 1: a collinear triple
   points.emplace_back(points[1] * 0.5f);
   Plane_batch baseline(Instruction_set::baseline), avx2(Instruction_set::avx2);
   std::size_t compared = 0;

@@ -84,8 +84,8 @@ private:
   typedef Eigen::Index Index;
 
   // The four steps.
-  void compute_planes(const std::vector<Eigen::Vector3f>& points, const Triple* triples,
-                                              std::size_t count, const Bin_layout& layout)
+  void compute_planes(const std::vector<Eigen::Vector3f>& points, const Triple* triples, std::size_t count,
+                      const Bin_layout& layout)
   {
     typedef Eigen::Map<Eigen::ArrayXf, Eigen::Aligned16> Array;
     // 1. Edges.
