@@ -280,6 +280,29 @@ TEST_CASE("The AVX2 loops give the same planes and triples as the baseline ones,
       }
     }
   }
+  // RRHT_Unif, in both of its ways of drawing a center (c^3 below and above
+  // the number of points).
+  for(unsigned int c : { 2u, 4u, 8u })
+  {
+    std::vector<Eigen::Vector3d> neighborhood;
+    for(int i = 0; i < 150; ++i)
+      neighborhood.push_back(random_direction(rng) * rng.uniform_real());
+    Unif_sampler baseline_sampler(c, Instruction_set::baseline), avx2_sampler(c, Instruction_set::avx2);
+    baseline_sampler.prepare(neighborhood, 1.);
+    avx2_sampler.prepare(neighborhood, 1.);
+    Random baseline_rng(16, c), avx2_rng(16, c);
+    Triple baseline_triples[64], avx2_triples[64];
+    for(int batch = 0; batch < 50; ++batch)
+    {
+      REQUIRE(baseline_sampler.draw(baseline_rng, 64, baseline_triples) == 64);
+      REQUIRE(avx2_sampler.draw(avx2_rng, 64, avx2_triples) == 64);
+      for(std::size_t i = 0; i < 64; ++i)
+      {
+        INFO("RRHT_Unif, c = " << c << ", batch " << batch << ", triple " << i);
+        REQUIRE(baseline_triples[i] == avx2_triples[i]);
+      }
+    }
+  }
 }
 
 TEST_CASE("The accumulator keeps the two most voted bins and the mean normal of the first", "[accumulator]")
@@ -633,6 +656,62 @@ TEST_CASE("RRHT_Cubes draws each point with the weight of its cube over the poin
     const double sigma = std::sqrt(draws * probability * (1 - probability));
     INFO("point " << i << " of cube " << cube << ": " << count[i] << " draws, expected " << draws * probability);
     REQUIRE(std::abs(count[i] - draws * probability) <= 6 * sigma);
+  }
+}
+
+TEST_CASE("RRHT_Unif draws each point as often as the paper's procedure does", "[sampling]")
+{
+  // The paper's procedure, literally (Section 5): a center uniform in the
+  // ball B_P (by rejection from its cube), redrawn while the small ball of
+  // radius r/c around it holds no point, then a point of the small ball
+  // uniformly. Against it, the sampler, in both of its ways of drawing a
+  // center: 60 points, c^3 below (c = 2, 3) and above (c = 4, 5) 60. Each
+  // point's frequency over 10^6 draws of each is within 6 sigma of the
+  // other's.
+  std::vector<Eigen::Vector3d> points;
+  Random rng(17, 18);
+  for(int i = 0; i < 60; ++i)
+  {
+    const double spread = (i < 40) ? 0.25 : 1.; // a dense cluster off center, and sparse points
+    Eigen::Vector3d p;
+    do
+      p = Eigen::Vector3d(2 * rng.uniform_real() - 1, 2 * rng.uniform_real() - 1, 2 * rng.uniform_real() - 1) * spread +
+          Eigen::Vector3d(i < 40 ? 0.4 : 0., 0., 0.);
+    while(p.norm() > 1);
+    points.push_back(p);
+  }
+  const int draws = 1000000;
+  for(unsigned int c : { 2u, 3u, 4u, 5u })
+  {
+    const double small_radius = 1. / c;
+    std::vector<int> paper(points.size(), 0), sampler_count(points.size(), 0);
+    std::vector<std::uint32_t> in_small_ball;
+    for(int d = 0; d < draws; ++d)
+    {
+      in_small_ball.clear();
+      while(in_small_ball.empty())
+      {
+        Eigen::Vector3d center;
+        do
+          center = Eigen::Vector3d(2 * rng.uniform_real() - 1, 2 * rng.uniform_real() - 1, 2 * rng.uniform_real() - 1);
+        while(center.squaredNorm() > 1);
+        for(std::uint32_t i = 0; i < points.size(); ++i)
+          if((points[i] - center).norm() <= small_radius)
+            in_small_ball.push_back(i);
+      }
+      ++paper[in_small_ball[rng.uniform_index(std::uint32_t(in_small_ball.size()))]];
+    }
+    Unif_sampler sampler(c);
+    sampler.prepare(points, 1.);
+    for(int d = 0; d < draws; ++d)
+      ++sampler_count[sampler.draw_point(rng)];
+    for(std::size_t i = 0; i < points.size(); ++i)
+    {
+      const double p = (paper[i] + sampler_count[i]) / (2. * draws);
+      const double sigma = std::sqrt(2. * draws * p * (1 - p));
+      INFO("c = " << c << ", point " << i << ": " << sampler_count[i] << " draws, " << paper[i] << " by the paper's procedure");
+      REQUIRE(std::abs(sampler_count[i] - paper[i]) <= 6 * sigma + 1);
+    }
   }
 }
 

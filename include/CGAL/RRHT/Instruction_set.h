@@ -1,16 +1,17 @@
 // Copyright (c) 2026 The CGAL RRHT authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The instruction set of the two loops that run for every plane hypothesis:
-// the draw of triples (`Points_sampler`) and the planes of a batch
-// (`Plane_batch`). They also get an AVX2 version, chosen at run time, that
-// gives the same results as the baseline one, bit for bit.
+// The instruction set of the loops that run for every plane hypothesis: the
+// draw of triples (`Points_sampler`, and the draws of points of
+// `Unif_sampler`) and the planes of a batch (`Plane_batch`). They also get an
+// AVX2 version, chosen at run time, that gives the same results as the
+// baseline one, bit for bit.
 
 #ifndef CGAL_RRHT_INSTRUCTION_SET_H
 #define CGAL_RRHT_INSTRUCTION_SET_H
 
 /// \def CGAL_RRHT_AVX2_KERNELS
-/// 1 when the two loops are compiled twice, for the target of the build and
+/// 1 when these loops are compiled twice, for the target of the build and
 /// for AVX2, and the AVX2 version runs on processors that have it. A build
 /// for a generic x86-64 target (SSE2, the default of compilers and of Linux
 /// distributions) otherwise uses 4 of the 8 lanes of today's processors.
@@ -39,7 +40,7 @@
 namespace CGAL {
 namespace RRHT {
 
-/// The instruction sets of the loops of `Points_sampler` and `Plane_batch`.
+/// The instruction sets of the loops of `Points_sampler`, `Unif_sampler` and `Plane_batch`.
 enum class Instruction_set
 {
   baseline, ///< the target of the build
@@ -72,7 +73,7 @@ __attribute__((target("avx2"), flatten)) void run_for_avx2(const Loop& loop)
 #endif
 } // namespace internal
 
-/// Runs `loop()`, a loop of `Points_sampler` or `Plane_batch`, compiled for
+/// Runs `loop()`, a loop of `Points_sampler`, `Unif_sampler` or `Plane_batch`, compiled for
 /// `instruction_set`.
 template <typename Loop>
 void run_with(Instruction_set instruction_set, const Loop& loop)
