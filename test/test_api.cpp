@@ -266,6 +266,32 @@ TEST_CASE("Same seed, same normals, bit for bit, whatever the concurrency and th
 }
 #endif
 
+TEST_CASE("The neighborhood rotated into the unit ball: Eigen's product in single precision, with each instruction set", "[api][parallel]")
+{
+  using namespace CGAL::RRHT;
+  Random rng(21, 22);
+  std::vector<Eigen::Vector3d> points;
+  for(int i = 0; i < 103; ++i) // an odd number: the vectorized loop has a tail
+    points.emplace_back(rng.uniform_real() - 0.5, 1e3 * rng.uniform_real(), -1e-3 * rng.uniform_real());
+  std::vector<Instruction_set> instruction_sets = { Instruction_set::baseline };
+  if(best_instruction_set() == Instruction_set::avx2)
+    instruction_sets.push_back(Instruction_set::avx2);
+  for(int round = 0; round < 20; ++round)
+  {
+    const Eigen::Matrix3d matrix = rng.uniform_rotation() / (0.1 + rng.uniform_real());
+    for(Instruction_set instruction_set : instruction_sets)
+    {
+      std::vector<Eigen::Vector3f> rotated(points.size());
+      internal::rotate(points, matrix, rotated, instruction_set);
+      for(std::size_t i = 0; i < points.size(); ++i)
+      {
+        INFO("round " << round << ", point " << i << ", instruction set " << int(instruction_set));
+        REQUIRE(rotated[i] == (matrix * points[i]).cast<float>().eval());
+      }
+    }
+  }
+}
+
 TEST_CASE("The callback reports progress, and returning false stops, leaving the rest unchanged", "[api][callback]")
 {
   const rrht_test::Cloud truth = noisy_cube(5000);

@@ -31,7 +31,7 @@ typedef std::array<std::uint32_t, 3> Triple;
 /// - Otherwise a triple is drawn uniformly and redrawn if this run has
 ///   already drawn it. The run's triples are kept in a list, and a bit
 ///   array of 32 bits per triple the run may draw (a blocked Bloom filter:
-///   two bits in one 64-bit word per triple) answers "never drawn" for all
+///   two bits in one 32-bit word per triple) answers "never drawn" for all
 ///   but a few in a thousand of the new triples; only those are looked up in
 ///   the list. This costs less than a hash set: one word, a store to the end
 ///   of a list, and a branch that is almost never taken (12.2 ns against
@@ -39,9 +39,13 @@ typedef std::array<std::uint32_t, 3> Triple;
 ///   micro-benchmark of 300 draws among 101 points, with one bit per
 ///   triple). With one bit per triple, 1% of the new triples went to the
 ///   list, whose scans were 3.4% of the instructions of a run at the
-///   precise setting (callgrind, 10k points of the noisy cube); with two,
-///   0.7%, and a vote of `hough_transform()` costs 16.1 ns instead of
-///   16.8 ns at 691 planes (micro-benchmark, noisy 101-point patch).
+///   precise setting (callgrind, 10k points of the noisy cube); with two
+///   bits in a 64-bit word, 0.7%, and a vote of `hough_transform()` costs
+///   16.1 ns instead of 16.8 ns at 691 planes (micro-benchmark, noisy
+///   101-point patch); with two bits in a 32-bit word, whose word and bits
+///   the vectorized loop computes, 0.2% (1.1% of the instructions), and a
+///   run at the precise setting takes 4.15e9 instructions instead of 4.41e9,
+///   with the rotation of `rotate()` (callgrind, same cloud, same triples).
 ///
 /// Triples are drawn in batches (`draw()`), with no call per triple through
 /// the sampling mode. When n <= 2^12 (`small_limit`), a triple costs one
@@ -77,10 +81,11 @@ public:
             m_all.push_back(Triple{{a, b, c}});
       return;
     }
-    m_filter_bits_log2 = 6;
-    while((std::size_t(1) << m_filter_bits_log2) < 32 * max_draws && m_filter_bits_log2 < 32)
-      ++m_filter_bits_log2;
-    m_filter.resize((std::size_t(1) << m_filter_bits_log2) / 64);
+    unsigned int filter_bits_log2 = 6;
+    while((std::size_t(1) << filter_bits_log2) < 32 * max_draws && filter_bits_log2 < 32)
+      ++filter_bits_log2;
+    m_filter.resize((std::size_t(1) << filter_bits_log2) / 32);
+    m_filter_shift = 32 - (filter_bits_log2 - 5);
     m_keys.resize(max_draws);
     for(std::int32_t i = 0; i < 3; ++i)
       m_rejection_threshold[i] = (n <= small_limit) ? std::int32_t((1u << 16) % (n - i)) : 0;
@@ -91,7 +96,7 @@ public:
     m_next = 0;
     if(!m_enumerate)
     {
-      std::fill(m_filter.begin(), m_filter.end(), std::uint64_t(0));
+      std::fill(m_filter.begin(), m_filter.end(), std::uint32_t(0));
       m_drawn = 0;
     }
   }
@@ -110,7 +115,7 @@ public:
       }
       return count;
     }
-    Drawn_set drawn{ m_keys.data(), m_filter.data(), 32 - (m_filter_bits_log2 - 6), m_drawn };
+    Drawn_set drawn{ m_keys.data(), m_filter.data(), m_filter_shift, m_drawn };
     if(m_n > small_limit)
     {
       for(std::size_t i = 0; i < count; ++i)
@@ -134,7 +139,7 @@ public:
         for(std::size_t i = kept, end = size; i < end; ++i)
         {
           const Triple t = {{ std::uint32_t(m_first[i]), std::uint32_t(m_middle[i]), std::uint32_t(m_last[i]) }};
-          if(m_accepted[i] != 0 && drawn.insert(exact_key(t), m_hash[i]))
+          if(m_accepted[i] != 0 && drawn.insert(m_key[i], m_filter_word[i], m_filter_bits[i]))
             chunk_out[kept++] = t;
         }
       }
@@ -208,6 +213,17 @@ private:
       m_hash[i] = (std::uint32_t(first) * 0x9E3779B1u) ^ (std::uint32_t(middle) * 0x85EBCA77u) ^
                   (std::uint32_t(last) * 0xC2B2AE3Du);
     }
+    // The filter's word and bits of each candidate, in a loop of their own:
+    // SSE2 has no shift by a different amount per lane, and the loop above
+    // stays vectorized without them.
+    const unsigned int shift = m_filter_shift;
+    for(std::size_t i = begin; i < end; ++i)
+    {
+      m_filter_word[i] = Drawn_set::word_of(m_hash[i], shift);
+      m_filter_bits[i] = Drawn_set::bits_of(m_hash[i]);
+    }
+    for(std::size_t i = begin; i < end; ++i)
+      m_key[i] = exact_key(Triple{{ std::uint32_t(m_first[i]), std::uint32_t(m_middle[i]), std::uint32_t(m_last[i]) }});
   }
 
   // A uniform triple for any n.
@@ -242,26 +258,47 @@ private:
   struct Drawn_set
   {
     std::uint64_t* keys;
-    std::uint64_t* filter;
+    std::uint32_t* filter;
     unsigned int shift; // 32 - log2 of the filter's words
     std::size_t size;
 
-    // Inserts `k`; false if it was there already. `hash` picks a word of the
-    // filter (its high bits) and two bits of it (its 12 low bits): a blocked
-    // Bloom filter, which sends to the list about a fifth as many new triples
-    // as one bit per triple did, for the same memory and one read.
-    bool insert(std::uint64_t k, std::uint32_t hash)
+    // A 32-bit hash of a triple picks a word of the filter (its high bits)
+    // and two bits of it (its 10 low bits): a blocked Bloom filter, which
+    // sends to the list about a fifth as many new triples as one bit per
+    // triple did, for the same memory and one read (0.2% of them at the fast
+    // setting on the noisy cube). With 32-bit words, the word and the bits
+    // are computed in the vectorized loop for AVX2 (`vpsllvd`).
+    static std::uint32_t word_of(std::uint32_t hash, unsigned int shift) { return hash >> shift; }
+    static std::uint32_t bits_of(std::uint32_t hash) { return (1u << (hash & 31u)) | (1u << ((hash >> 5) & 31u)); }
+
+    // Inserts `k`, whose hash gives `word` and `bits`; false if it was there
+    // already.
+    bool insert(std::uint64_t k, std::uint32_t word, std::uint32_t bits)
     {
-      std::uint64_t& word = filter[std::uint64_t(hash) >> shift];
-      const std::uint64_t mask = (std::uint64_t(1) << (hash & 63u)) | (std::uint64_t(1) << ((hash >> 6) & 63u));
-      if((word & mask) == mask && std::find(keys, keys + size, k) != keys + size)
+      std::uint32_t& filter_word = filter[word];
+      if((filter_word & bits) == bits && contains(keys, size, k))
         return false;
-      word |= mask;
+      filter_word |= bits;
       keys[size++] = k;
       return true;
     }
 
-    bool insert(std::uint64_t k) { return insert(k, std::uint32_t((k * 0x9E3779B97F4A7C15ull) >> 32)); }
+    // Whether `k` is among the first `size` keys: the rare case, when the
+    // filter has the bits of `k` already, in a function of its own so that
+    // the loop that calls `insert()` keeps its registers.
+#if defined(__GNUC__)
+    __attribute__((noinline))
+#endif
+    static bool contains(const std::uint64_t* keys, std::size_t size, std::uint64_t k)
+    {
+      return std::find(keys, keys + size, k) != keys + size;
+    }
+
+    bool insert(std::uint64_t k)
+    {
+      const std::uint32_t hash = std::uint32_t((k * 0x9E3779B97F4A7C15ull) >> 32);
+      return insert(k, word_of(hash, shift), bits_of(hash));
+    }
   };
 
   Instruction_set m_instruction_set;
@@ -273,14 +310,16 @@ private:
   // rejection rate of 16-bit numbers stays below 3 / 16 per triple).
   static constexpr std::uint32_t small_limit = 1u << 12;
   static constexpr std::size_t chunk = 64;
-  // A chunk of candidates: random bits, triple, accepted (0 or 1), hash.
+  // A chunk of candidates: random bits, triple, accepted (0 or 1), hash,
+  // word and bits of the filter.
   std::uint32_t m_low_bits[chunk], m_high_bits[chunk];
   std::int32_t m_first[chunk], m_middle[chunk], m_last[chunk], m_accepted[chunk];
-  std::uint32_t m_hash[chunk];
+  std::uint32_t m_hash[chunk], m_filter_word[chunk], m_filter_bits[chunk];
+  std::uint64_t m_key[chunk];
   std::vector<std::uint64_t> m_keys;   // this run's triples: the first m_drawn
   std::size_t m_drawn = 0;
-  std::vector<std::uint64_t> m_filter; // and their bits
-  unsigned int m_filter_bits_log2 = 6;
+  std::vector<std::uint32_t> m_filter; // and their bits
+  unsigned int m_filter_shift = 31;
   std::int32_t m_rejection_threshold[3] = { 0, 0, 0 };
 };
 
