@@ -102,9 +102,12 @@ public:
   }
 
   /// Coordinate of the cell holding `x` along one axis (clamped to the grid).
+  /// Clamped first, then truncated: the floor, without a call to
+  /// `std::floor()`, which has no SSE2 instruction (2.5% of the instructions
+  /// of RRHT_Cubes at the fast setting).
   std::uint32_t coordinate(double x) const
   {
-    const double c = std::floor((x + m_radius) / m_cell_size);
+    const double c = (x + m_radius) / m_cell_size;
     return static_cast<std::uint32_t>((std::min)((std::max)(c, 0.), double(m_cells_per_axis - 1)));
   }
 
@@ -574,8 +577,8 @@ private:
     std::uint32_t cell = 0;
     for(int d = 0; d < 3; ++d)
     {
-      const float coordinate = std::floor(p[d] + float(m_c));
-      const float clamped = (std::min)((std::max)(coordinate, 0.f), float(2 * m_c - 1));
+      // Clamped, then truncated: the floor, without `std::floor()`.
+      const float clamped = (std::min)((std::max)(p[d] + float(m_c), 0.f), float(2 * m_c - 1));
       cell = cell * m_cells_per_axis + std::uint32_t(clamped) + 1;
     }
     return cell;
