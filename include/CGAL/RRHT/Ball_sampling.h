@@ -56,22 +56,32 @@ protected:
   std::uint32_t m_n = 0;
 };
 
+namespace internal {
+// A point other than `a` and `b`.
+template <typename Sampler>
+std::uint32_t draw_other_point(Sampler& sampler, std::uint32_t n, Random& rng, std::uint32_t a, std::uint32_t b)
+{
+  for(int attempts = 0; attempts < 64; ++attempts)
+  {
+    const std::uint32_t p = sampler.draw_point(rng);
+    if(p != a && p != b)
+      return p;
+  }
+  for(;;)
+  {
+    const std::uint32_t p = rng.uniform_index(n);
+    if(p != a && p != b)
+      return p;
+  }
+}
+} // namespace internal
+
 template <typename Sampler>
 void draw_distinct_triple(Sampler& sampler, std::uint32_t n, Random& rng, Triple& t)
 {
-  for(int i = 0; i < 3; ++i)
-  {
-    int attempts = 0;
-    for(;;)
-    {
-      std::uint32_t p = (attempts < 64) ? sampler.draw_point(rng) : rng.uniform_index(n);
-      ++attempts;
-      if((i > 0 && p == t[0]) || (i > 1 && p == t[1]))
-        continue;
-      t[i] = p;
-      break;
-    }
-  }
+  t[0] = sampler.draw_point(rng);
+  t[1] = internal::draw_other_point(sampler, n, rng, t[0], t[0]);
+  t[2] = internal::draw_other_point(sampler, n, rng, t[0], t[1]);
 }
 
 /// The points of a neighborhood bucketed in a regular grid of
@@ -226,8 +236,11 @@ public:
     for(std::size_t c = 0; c < m_grid.number_of_cells(); ++c)
     {
       const auto range = m_grid.points_in(c);
+      if(range.first == range.second)
+        continue;
+      const double scaled = m_weights->weight(c) / (total * (range.second - range.first)) * m_n;
       for(std::uint32_t e = range.first; e < range.second; ++e)
-        m_scaled[m_grid.point(e)] = m_weights->weight(c) / (total * (range.second - range.first)) * m_n;
+        m_scaled[m_grid.point(e)] = scaled;
     }
 
     // Walker's alias table (Vose's construction): point i is kept with
