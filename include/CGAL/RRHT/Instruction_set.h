@@ -3,9 +3,10 @@
 //
 // The instruction set of the loops that run for every plane hypothesis: the
 // draw of triples (`Points_sampler`, and the draws of points of
-// `Unif_sampler`) and the planes of a batch (`Plane_batch`). They also get an
-// AVX2 version, chosen at run time, that gives the same results as the
-// baseline one, bit for bit.
+// `Unif_sampler`) and the planes of a batch (`Plane_batch`); and of the
+// rotation of a neighborhood for each accumulator (`internal::rotate()`).
+// They also get an AVX2 version, chosen at run time, that gives the same
+// results as the baseline one, bit for bit.
 
 #ifndef CGAL_RRHT_INSTRUCTION_SET_H
 #define CGAL_RRHT_INSTRUCTION_SET_H
@@ -40,7 +41,8 @@
 namespace CGAL {
 namespace RRHT {
 
-/// The instruction sets of the loops of `Points_sampler`, `Unif_sampler` and `Plane_batch`.
+/// The instruction sets of the loops of `Points_sampler`, `Unif_sampler`,
+/// `Plane_batch` and `internal::rotate()`.
 enum class Instruction_set
 {
   baseline, ///< the target of the build
@@ -73,8 +75,8 @@ __attribute__((target("avx2"), flatten)) void run_for_avx2(const Loop& loop)
 #endif
 } // namespace internal
 
-/// Runs `loop()`, a loop of `Points_sampler`, `Unif_sampler` or `Plane_batch`, compiled for
-/// `instruction_set`.
+/// Runs `loop()`, a loop of `Points_sampler`, `Unif_sampler`, `Plane_batch`
+/// or `internal::rotate()`, compiled for `instruction_set`.
 template <typename Loop>
 void run_with(Instruction_set instruction_set, const Loop& loop)
 {
