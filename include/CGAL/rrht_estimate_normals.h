@@ -18,6 +18,7 @@
 #include <CGAL/RRHT/aggregation.h>
 #include <CGAL/RRHT/Random.h>
 
+#include <CGAL/assertions.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/property_map.h>
@@ -124,14 +125,16 @@ Candidate_normal hough_transform(const std::vector<Eigen::Vector3f>& points, Sam
 }
 
 /// `points` multiplied by `matrix`, in single precision, into `out` (of the
-/// same size). Each coordinate is (m_i0 x + m_i1 y) + m_i2 z, as Eigen's
-/// product computes it, in double precision: the same bits with the loop of
-/// each instruction set (`Instruction_set.h`). For AVX2 the loop is
-/// vectorized over 4 points. It runs for every accumulator; as an Eigen
-/// product per point it took 3 to 4% of the instructions at the fast setting.
+/// same size). Each coordinate is (m_i0 x + m_i1 y) + m_i2 z in double
+/// precision, as Eigen's product computes it (the same floats: tested), and
+/// the same bits with the loop of each instruction set (`Instruction_set.h`).
+/// For AVX2 the loop is vectorized over 4 points. It runs for every
+/// accumulator; as an Eigen product per point it took 3 to 4% of the
+/// instructions at the fast setting.
 inline void rotate(const std::vector<Eigen::Vector3d>& points, const Eigen::Matrix3d& matrix,
                    std::vector<Eigen::Vector3f>& out, Instruction_set instruction_set)
 {
+  CGAL_precondition(out.size() == points.size());
   // The coordinates of the points one after the other (Eigen's fixed-size
   // vectors hold their coefficients and nothing else).
   const Eigen::Map<const Eigen::Matrix3Xd> in(points.data()->data(), 3, Eigen::Index(points.size()));

@@ -84,6 +84,21 @@ void draw_distinct_triple(Sampler& sampler, std::uint32_t n, Random& rng, Triple
   t[2] = internal::draw_other_point(sampler, n, rng, t[0], t[1]);
 }
 
+namespace internal {
+/// Squared distance from the origin (the center of B_P) to the cube
+/// [low[0], low[0] + side] x [low[1], ...] x [low[2], ...]; 0 inside.
+inline double squared_distance_to_cube(const double low[3], double side)
+{
+  double squared_distance = 0;
+  for(int d = 0; d < 3; ++d)
+  {
+    const double gap = (std::max)({ low[d], -(low[d] + side), 0. });
+    squared_distance += gap * gap;
+  }
+  return squared_distance;
+}
+} // namespace internal
+
 /// The points of a neighborhood bucketed in a regular grid of
 /// `cells_per_axis`^3 cells covering [-radius, radius]^3 (a counting sort:
 /// the points of cell c are `point(i)` for i in `points_in(c)`).
@@ -167,14 +182,7 @@ public:
         for(unsigned int k = 0; k < c; ++k)
         {
           const double lo[3] = { -1 + i * side, -1 + j * side, -1 + k * side };
-          // Squared distance from the center of the ball to the cube.
-          double nearest = 0;
-          for(int d = 0; d < 3; ++d)
-          {
-            const double gap = (std::max)({ lo[d], -(lo[d] + side), 0. });
-            nearest += gap * gap;
-          }
-          if(nearest >= 1)
+          if(internal::squared_distance_to_cube(lo, side) >= 1)
             continue;
           std::size_t inside = 0;
           for(unsigned int a = 0; a < m; ++a)
@@ -568,14 +576,9 @@ private:
       for(std::int32_t j = 1; j + 1 < g; ++j)
         for(std::int32_t k = 1; k + 1 < g; ++k)
         {
-          // Squared distance from the center of B_P to the cell.
-          double nearest = 0;
-          for(std::int32_t low : { i, j, k })
-          {
-            const double gap = (std::max)({ low - 1 - c, -(low - c), 0. });
-            nearest += gap * gap;
-          }
-          m_meets_ball[(std::size_t(i) * g + j) * g + k] = (nearest <= c * c);
+          // Cell i of the grid spans [i - 1 - c, i - c] (in units of s).
+          const double low[3] = { i - 1 - c, j - 1 - c, k - 1 - c };
+          m_meets_ball[(std::size_t(i) * g + j) * g + k] = (internal::squared_distance_to_cube(low, 1.) <= c * c);
         }
     m_neighbor_offsets.clear();
     for(std::int32_t a = -1; a <= 1; ++a)
