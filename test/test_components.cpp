@@ -280,6 +280,28 @@ TEST_CASE("The AVX2 loops give the same planes and triples as the baseline ones,
       }
     }
   }
+  // RRHT_Cubes, batches of every size up to two chunks.
+  {
+    std::vector<Eigen::Vector3d> neighborhood;
+    for(int i = 0; i < 150; ++i)
+      neighborhood.push_back(random_direction(rng) * rng.uniform_real());
+    const Cube_weights weights(4);
+    Cubes_sampler baseline_sampler(weights, Instruction_set::baseline), avx2_sampler(weights, Instruction_set::avx2);
+    baseline_sampler.prepare(neighborhood, 1.);
+    avx2_sampler.prepare(neighborhood, 1.);
+    Random baseline_rng(17, 4), avx2_rng(17, 4);
+    std::vector<Triple> baseline_triples(130), avx2_triples(130);
+    for(std::size_t count = 1; count <= 130; ++count)
+    {
+      REQUIRE(baseline_sampler.draw(baseline_rng, count, baseline_triples.data()) == count);
+      REQUIRE(avx2_sampler.draw(avx2_rng, count, avx2_triples.data()) == count);
+      for(std::size_t i = 0; i < count; ++i)
+      {
+        INFO("RRHT_Cubes, batch of " << count << ", triple " << i);
+        REQUIRE(baseline_triples[i] == avx2_triples[i]);
+      }
+    }
+  }
   // RRHT_Unif, in both of its ways of drawing a center (c^3 below and above
   // the number of points).
   for(unsigned int c : { 2u, 4u, 8u })
@@ -656,6 +678,77 @@ TEST_CASE("RRHT_Cubes draws each point with the weight of its cube over the poin
     const double sigma = std::sqrt(draws * probability * (1 - probability));
     INFO("point " << i << " of cube " << cube << ": " << count[i] << " draws, expected " << draws * probability);
     REQUIRE(std::abs(count[i] - draws * probability) <= 6 * sigma);
+  }
+}
+
+TEST_CASE("RRHT_Cubes draws its batches of triples as draw_distinct_triple() does", "[sampling]")
+{
+  // Cubes_sampler::draw() takes the three draws of a triple from a chunk
+  // computed in advance, and goes on with draw_point() only when they are
+  // not distinct. The triples must have the distribution of
+  // draw_distinct_triple(): in a spread neighborhood (40 points, few
+  // repeats), each point's frequency at each place of the triple; in a
+  // neighborhood of 3 points, one of which has almost all the probability
+  // (many repeats, and after 64 of them a uniform draw), the frequency of
+  // each of the 6 orders. Each over 3 10^5 triples of each, within 6 sigma
+  // of the other's.
+  const Cube_weights weights(4);
+  Random rng(19, 20);
+  std::vector<Eigen::Vector3d> spread;
+  for(int i = 0; i < 40; ++i)
+  {
+    Eigen::Vector3d p;
+    do
+      p = Eigen::Vector3d(2 * rng.uniform_real() - 1, 2 * rng.uniform_real() - 1, 2 * rng.uniform_real() - 1) *
+          (i < 25 ? 0.3 : 1.);
+    while(p.norm() > 1);
+    spread.push_back(p);
+  }
+  // The cube around the center, of weight 1/64 (the whole cube), and a cube
+  // at the boundary of the ball, of weight about 3 10^-5.
+  const std::vector<Eigen::Vector3d> concentrated = { Eigen::Vector3d(0.1, 0.1, 0.1), Eigen::Vector3d(0.53, 0.53, 0.53),
+                                                      Eigen::Vector3d(0.55, 0.52, 0.54) };
+  const int triples = 300000;
+  const std::vector<Eigen::Vector3d>* neighborhoods[] = { &spread, &concentrated };
+  for(const std::vector<Eigen::Vector3d>* points : neighborhoods)
+  {
+    const bool orders = (points->size() == 3);
+    Cubes_sampler sampler(weights);
+    sampler.prepare(*points, 1.);
+    auto category = [&](const Triple& t, int place) {
+      REQUIRE((t[0] != t[1] && t[0] != t[2] && t[1] != t[2]));
+      REQUIRE(t[place] < points->size());
+      return orders ? std::size_t(t[0] * 3 + t[1]) : std::size_t(place) * points->size() + t[place];
+    };
+    const std::size_t categories = 3 * points->size();
+    std::vector<int> batches(categories, 0), one_by_one(categories, 0);
+    std::vector<Triple> batch(150);
+    for(int drawn = 0, count = 1; drawn < triples; drawn += count, count = count % 150 + 1)
+    {
+      count = (std::min)(count, triples - drawn);
+      REQUIRE(sampler.draw(rng, std::size_t(count), batch.data()) == std::size_t(count));
+      for(int i = 0; i < count; ++i)
+        for(int place = 0; place < (orders ? 1 : 3); ++place)
+          ++batches[category(batch[i], place)];
+    }
+    for(int i = 0; i < triples; ++i)
+    {
+      Triple t;
+      draw_distinct_triple(sampler, std::uint32_t(points->size()), rng, t);
+      for(int place = 0; place < (orders ? 1 : 3); ++place)
+        ++one_by_one[category(t, place)];
+    }
+    int seen = 0;
+    for(std::size_t k = 0; k < categories; ++k)
+    {
+      const double p = (batches[k] + one_by_one[k]) / (2. * triples);
+      const double sigma = std::sqrt(2. * triples * p * (1 - p));
+      INFO((orders ? "order " : "place and point ") << k << ": " << batches[k] << " in batches, " << one_by_one[k]
+                                                       << " by draw_distinct_triple()");
+      REQUIRE(std::abs(batches[k] - one_by_one[k]) <= 6 * sigma + 1);
+      seen += (batches[k] > 0);
+    }
+    CHECK(seen >= (orders ? 6 : 100));
   }
 }
 

@@ -2,9 +2,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The instruction set of the loops that run for every plane hypothesis: the
-// draw of triples (`Points_sampler`, and the draws of points of
-// `Unif_sampler`) and the planes of a batch (`Plane_batch`); and of the
-// rotation of a neighborhood for each accumulator (`internal::rotate()`).
+// draw of triples (`Points_sampler`, `Cubes_sampler`, and the draws of
+// points of `Unif_sampler`) and the planes of a batch (`Plane_batch`); and
+// of the rotation of a neighborhood for each accumulator
+// (`internal::rotate()`).
 // They also get an AVX2 version, chosen at run time, that gives the same
 // results as the baseline one, bit for bit.
 
@@ -41,8 +42,8 @@
 namespace CGAL {
 namespace RRHT {
 
-/// The instruction sets of the loops of `Points_sampler`, `Unif_sampler`,
-/// `Plane_batch` and `internal::rotate()`.
+/// The instruction sets of the loops of `Points_sampler`, `Cubes_sampler`,
+/// `Unif_sampler`, `Plane_batch` and `internal::rotate()`.
 enum class Instruction_set
 {
   baseline, ///< the target of the build
@@ -75,8 +76,9 @@ __attribute__((target("avx2"), flatten)) void run_for_avx2(const Loop& loop)
 #endif
 } // namespace internal
 
-/// Runs `loop()`, a loop of `Points_sampler`, `Unif_sampler`, `Plane_batch`
-/// or `internal::rotate()`, compiled for `instruction_set`.
+/// Runs `loop()`, a loop of `Points_sampler`, `Cubes_sampler`,
+/// `Unif_sampler`, `Plane_batch` or `internal::rotate()`, compiled for
+/// `instruction_set`.
 template <typename Loop>
 void run_with(Instruction_set instruction_set, const Loop& loop)
 {
