@@ -681,20 +681,57 @@ TEST_CASE("RRHT_Cubes draws each point with the weight of its cube over the poin
   }
 }
 
-TEST_CASE("RRHT_Cubes draws its batches of triples as draw_distinct_triple() does", "[sampling]")
+namespace {
+// Whether sampler.draw() (prepared for `n` points) gives the triples of
+// draw_distinct_triple(): with `orders`, the frequency of each of the 6
+// orders of 3 points; else each point's frequency at each place of the
+// triple. Over 3 10^5 triples of each, in batches of 1 to 150, each
+// frequency within 6 sigma of the other's.
+template <typename Sampler>
+void require_batches_as_draw_distinct_triple(Sampler& sampler, std::uint32_t n, Random& rng)
 {
-  // Cubes_sampler::draw() takes the three draws of a triple from a chunk
-  // computed in advance, and goes on with draw_point() only when they are
-  // not distinct. The triples must have the distribution of
-  // draw_distinct_triple(): in a spread neighborhood (40 points, few
-  // repeats), each point's frequency at each place of the triple; in a
-  // neighborhood of 3 points, one of which has almost all the probability
-  // (many repeats, and after 64 of them a uniform draw), the frequency of
-  // each of the 6 orders. Each over 3 10^5 triples of each, within 6 sigma
-  // of the other's.
-  const Cube_weights weights(4);
-  Random rng(19, 20);
-  std::vector<Eigen::Vector3d> spread;
+  const bool orders = (n == 3);
+  auto category = [&](const Triple& t, int place) {
+    REQUIRE((t[0] != t[1] && t[0] != t[2] && t[1] != t[2]));
+    REQUIRE(t[place] < n);
+    return orders ? std::size_t(t[0] * 3 + t[1]) : std::size_t(place) * n + t[place];
+  };
+  const int triples = 300000;
+  const std::size_t categories = 3 * std::size_t(n);
+  std::vector<int> batches(categories, 0), one_by_one(categories, 0);
+  std::vector<Triple> batch(150);
+  for(int drawn = 0, count = 1; drawn < triples; drawn += count, count = count % 150 + 1)
+  {
+    count = (std::min)(count, triples - drawn);
+    REQUIRE(sampler.draw(rng, std::size_t(count), batch.data()) == std::size_t(count));
+    for(int i = 0; i < count; ++i)
+      for(int place = 0; place < (orders ? 1 : 3); ++place)
+        ++batches[category(batch[i], place)];
+  }
+  for(int i = 0; i < triples; ++i)
+  {
+    Triple t;
+    draw_distinct_triple(sampler, n, rng, t);
+    for(int place = 0; place < (orders ? 1 : 3); ++place)
+      ++one_by_one[category(t, place)];
+  }
+  std::size_t seen = 0;
+  for(std::size_t k = 0; k < categories; ++k)
+  {
+    const double p = (batches[k] + one_by_one[k]) / (2. * triples);
+    const double sigma = std::sqrt(2. * triples * p * (1 - p));
+    INFO((orders ? "order " : "place and point ") << k << ": " << batches[k] << " in batches, " << one_by_one[k]
+                                                     << " by draw_distinct_triple()");
+    REQUIRE(std::abs(batches[k] - one_by_one[k]) <= 6 * sigma + 1);
+    seen += (batches[k] > 0);
+  }
+  CHECK(seen >= (orders ? 6 : categories * 4 / 5));
+}
+
+// 40 points of the unit ball, 25 of them in a dense cluster.
+std::vector<Eigen::Vector3d> spread_neighborhood(Random& rng)
+{
+  std::vector<Eigen::Vector3d> points;
   for(int i = 0; i < 40; ++i)
   {
     Eigen::Vector3d p;
@@ -702,53 +739,47 @@ TEST_CASE("RRHT_Cubes draws its batches of triples as draw_distinct_triple() doe
       p = Eigen::Vector3d(2 * rng.uniform_real() - 1, 2 * rng.uniform_real() - 1, 2 * rng.uniform_real() - 1) *
           (i < 25 ? 0.3 : 1.);
     while(p.norm() > 1);
-    spread.push_back(p);
+    points.push_back(p);
   }
-  // The cube around the center, of weight 1/64 (the whole cube), and a cube
-  // at the boundary of the ball, of weight about 3 10^-5.
-  const std::vector<Eigen::Vector3d> concentrated = { Eigen::Vector3d(0.1, 0.1, 0.1), Eigen::Vector3d(0.53, 0.53, 0.53),
-                                                      Eigen::Vector3d(0.55, 0.52, 0.54) };
-  const int triples = 300000;
-  const std::vector<Eigen::Vector3d>* neighborhoods[] = { &spread, &concentrated };
-  for(const std::vector<Eigen::Vector3d>* points : neighborhoods)
+  return points;
+}
+
+// 3 points: one near the center, two close to each other at the boundary.
+const std::vector<Eigen::Vector3d> concentrated_neighborhood = {
+  Eigen::Vector3d(0.1, 0.1, 0.1), Eigen::Vector3d(0.53, 0.53, 0.53), Eigen::Vector3d(0.55, 0.52, 0.54)
+};
+} // namespace
+
+TEST_CASE("RRHT_Cubes and RRHT_Unif draw their batches of triples as draw_distinct_triple() does", "[sampling]")
+{
+  // The batches of Cubes_sampler::draw() take the three draws of a triple
+  // from a chunk computed in advance, and go on with draw_point() only when
+  // they are not distinct; those of Unif_sampler::draw() take the points
+  // of a chunk of centers computed in advance. The triples must have the
+  // distribution of draw_distinct_triple(): in a spread neighborhood (few
+  // repeats), and in a neighborhood of 3 points where one has almost all
+  // the probability (many repeats, and after 64 of them a uniform draw).
+  Random rng(19, 20);
+  const std::vector<Eigen::Vector3d> spread = spread_neighborhood(rng);
+  // RRHT_Cubes: for the 3 points, the cube around the center, of weight
+  // 1/64 (the whole cube), and a cube at the boundary of the ball, of
+  // weight about 3 10^-5.
+  const Cube_weights weights(4);
+  for(const std::vector<Eigen::Vector3d>* points : { &spread, &concentrated_neighborhood })
   {
-    const bool orders = (points->size() == 3);
     Cubes_sampler sampler(weights);
     sampler.prepare(*points, 1.);
-    auto category = [&](const Triple& t, int place) {
-      REQUIRE((t[0] != t[1] && t[0] != t[2] && t[1] != t[2]));
-      REQUIRE(t[place] < points->size());
-      return orders ? std::size_t(t[0] * 3 + t[1]) : std::size_t(place) * points->size() + t[place];
-    };
-    const std::size_t categories = 3 * points->size();
-    std::vector<int> batches(categories, 0), one_by_one(categories, 0);
-    std::vector<Triple> batch(150);
-    for(int drawn = 0, count = 1; drawn < triples; drawn += count, count = count % 150 + 1)
-    {
-      count = (std::min)(count, triples - drawn);
-      REQUIRE(sampler.draw(rng, std::size_t(count), batch.data()) == std::size_t(count));
-      for(int i = 0; i < count; ++i)
-        for(int place = 0; place < (orders ? 1 : 3); ++place)
-          ++batches[category(batch[i], place)];
-    }
-    for(int i = 0; i < triples; ++i)
-    {
-      Triple t;
-      draw_distinct_triple(sampler, std::uint32_t(points->size()), rng, t);
-      for(int place = 0; place < (orders ? 1 : 3); ++place)
-        ++one_by_one[category(t, place)];
-    }
-    int seen = 0;
-    for(std::size_t k = 0; k < categories; ++k)
-    {
-      const double p = (batches[k] + one_by_one[k]) / (2. * triples);
-      const double sigma = std::sqrt(2. * triples * p * (1 - p));
-      INFO((orders ? "order " : "place and point ") << k << ": " << batches[k] << " in batches, " << one_by_one[k]
-                                                       << " by draw_distinct_triple()");
-      REQUIRE(std::abs(batches[k] - one_by_one[k]) <= 6 * sigma + 1);
-      seen += (batches[k] > 0);
-    }
-    CHECK(seen >= (orders ? 6 : 100));
+    require_batches_as_draw_distinct_triple(sampler, std::uint32_t(points->size()), rng);
+  }
+  // RRHT_Unif, with its centers drawn in the live cells (fewer than c^3
+  // points would draw them from the points, without batches): c = 2 and 3
+  // for the 40 points, c = 1 for the 3.
+  for(unsigned int c : { 1u, 2u, 3u })
+  {
+    const std::vector<Eigen::Vector3d>& points = (c == 1) ? concentrated_neighborhood : spread;
+    Unif_sampler sampler(c);
+    sampler.prepare(points, 1.);
+    require_batches_as_draw_distinct_triple(sampler, std::uint32_t(points.size()), rng);
   }
 }
 

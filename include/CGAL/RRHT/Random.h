@@ -90,6 +90,18 @@ public:
     return std::uint32_t(product & (bits21_limit - 1)) >= threshold;
   }
 
+  /// Uniform integer in [0, range), range > 0, from 32 random bits
+  /// (Lemire's method): sets x and returns true, or returns false, with
+  /// probability below range / 2^32, when the draw must be made again to
+  /// stay unbiased.
+  static bool draw32(std::uint32_t bits, std::uint32_t range, std::uint32_t& x)
+  {
+    const std::uint64_t product = std::uint64_t(bits) * range;
+    x = std::uint32_t(product >> 32);
+    const std::uint32_t low = std::uint32_t(product);
+    return low >= range || low >= std::uint32_t(-range) % range;
+  }
+
 private:
   static constexpr std::uint64_t golden_gamma = 0x9E3779B97F4A7C15ull;
 
