@@ -44,19 +44,6 @@ inline std::uint32_t other_point(std::uint32_t n, Random& rng, std::uint32_t a, 
   }
 }
 
-// A point other than `a` and `b`, with `sampler.draw_point(rng)`.
-template <typename Sampler>
-std::uint32_t draw_other_point(Sampler& sampler, std::uint32_t n, Random& rng, std::uint32_t a, std::uint32_t b)
-{
-  for(int attempts = 0; attempts < max_repeated_draws; ++attempts)
-  {
-    const std::uint32_t p = sampler.draw_point(rng);
-    if(p != a && p != b)
-      return p;
-  }
-  return other_point(n, rng, a, b);
-}
-
 /// The triple of `draw_distinct_triple()` made from draws given one at a
 /// time to `add()`.
 class Distinct_triple
@@ -98,9 +85,10 @@ private:
 template <typename Sampler>
 void draw_distinct_triple(Sampler& sampler, std::uint32_t n, Random& rng, Triple& t)
 {
-  t[0] = sampler.draw_point(rng);
-  t[1] = internal::draw_other_point(sampler, n, rng, t[0], t[0]);
-  t[2] = internal::draw_other_point(sampler, n, rng, t[0], t[1]);
+  internal::Distinct_triple triple;
+  while(!triple.add(sampler.draw_point(rng), n, rng))
+    ;
+  t = triple.triple();
 }
 
 namespace internal {
@@ -263,7 +251,7 @@ public:
       m_keep[small] = static_cast<std::int32_t>(m_scaled[small] * always_keep);
       m_alias[small] = std::int32_t(large);
       m_scaled[large] -= 1 - m_scaled[small];
-      // The large one is now small: it moves to the other list.
+      // If the large one is now small, it moves to the other list.
       const bool now_small = m_scaled[large] < 1;
       m_small[smalls] = large;
       smalls += now_small;
