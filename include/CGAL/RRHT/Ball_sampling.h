@@ -710,7 +710,15 @@ private:
     const float ball = float(m_c) * float(m_c);
     internal::Distinct_triple triple;
     std::size_t written = 0;
-    int failed = 0; // centers in a row with an empty small ball
+    // Centers since the last point drawn; after `max_failed_centers` of
+    // them (only through rounding, see `draw_point()`), a point is drawn
+    // uniformly instead.
+    int failed = 0;
+    auto add_point = [&](std::uint32_t p) {
+      failed = 0;
+      if(triple.add(p, m_n, rng))
+        out[written++] = triple.triple();
+    };
     while(written < count)
     {
       for(std::size_t j = 0; j < chunk; ++j)
@@ -739,6 +747,9 @@ private:
         kept_centers[centers] = std::int32_t(j);
         centers += std::size_t(kept[j]);
       }
+      failed += int(chunk - centers); // those not kept, counted first
+      if(failed >= max_failed_centers)
+        add_point(rng.uniform_index(m_n));
       for(std::size_t k = 0; k < centers && written < count; ++k)
       {
         const std::int32_t j = kept_centers[k];
@@ -746,20 +757,14 @@ private:
         const std::uint32_t m = points_in_small_ball(cell, Eigen::Vector3f(x[j], y[j], z[j]));
         if(m == 0)
         {
-          if(++failed < max_failed_centers)
-            continue;
-          // Only through rounding (see `draw_point()`).
-          if(triple.add(rng.uniform_index(m_n), m_n, rng))
-            out[written++] = triple.triple();
-          failed = 0;
+          if(++failed >= max_failed_centers)
+            add_point(rng.uniform_index(m_n));
           continue;
         }
-        failed = 0;
         std::uint32_t rank;
         if(!Random::draw32(rank_bits[j], m, rank))
           rank = rng.uniform_index(m);
-        if(triple.add(point_of_small_ball(cell, rank), m_n, rng))
-          out[written++] = triple.triple();
+        add_point(point_of_small_ball(cell, rank));
       }
     }
   }
