@@ -349,13 +349,13 @@ private:
         accepted[j] = point_of(low_bits[j], n, threshold, i);
         point[j] = std::int32_t(choose(i, high_bits[j], keep, alias));
       }
-      const std::int32_t *second = point + triples, *third = point + 2 * triples;
+      const std::int32_t *first = point, *second = point + triples, *third = point + 2 * triples;
       for(std::size_t k = 0; k < triples; ++k)
-        is_triple[k] = (accepted[k] & accepted[k + triples] & accepted[k + 2 * triples]) & (point[k] != second[k]) &
-                       (point[k] != third[k]) & (second[k] != third[k]);
+        is_triple[k] = (accepted[k] & accepted[k + triples] & accepted[k + 2 * triples]) & (first[k] != second[k]) &
+                       (first[k] != third[k]) & (second[k] != third[k]);
       for(std::size_t k = 0; k < triples; ++k)
       {
-        const std::array<std::int32_t, 3> drawn = {{ point[k], second[k], third[k] }};
+        const std::array<std::int32_t, 3> drawn = {{ first[k], second[k], third[k] }};
         if(is_triple[k] != 0)
           out[written++] = Triple{{ std::uint32_t(drawn[0]), std::uint32_t(drawn[1]), std::uint32_t(drawn[2]) }};
         else
