@@ -16,11 +16,8 @@
 
 #include <algorithm>
 #include <array>
-#include <initializer_list>
-#include <cmath>
 #include <cstdint>
-#include <stdexcept>
-#include <utility>
+#include <initializer_list>
 #include <vector>
 
 namespace CGAL {
