@@ -258,7 +258,7 @@ public:
       set_always_kept(m_small[s]);
     for(std::uint32_t l = 0; l < larges; ++l)
       set_always_kept(m_large[l]);
-    m_rejection_threshold = (m_n != 0 && m_n <= small_limit) ? std::int32_t((1u << 16) % m_n) : 0;
+    m_rejection_threshold = (m_n != 0 && m_n <= small_limit) ? Random::rejection_threshold16(m_n) : 0;
   }
 
   void start_run() {}
@@ -288,7 +288,7 @@ public:
     {
       const std::uint64_t word = rng();
       std::int32_t i;
-      if(point_of(std::uint32_t(word), std::int32_t(m_n), m_rejection_threshold, i))
+      if(Random::draw16(std::uint32_t(word), std::int32_t(m_n), m_rejection_threshold, i))
         return choose(i, std::uint32_t(word >> 32), m_keep.data(), m_alias.data());
     }
   }
@@ -301,16 +301,6 @@ private:
   {
     const std::int32_t alias_mask = -std::int32_t(std::int32_t(choice >> 2) >= keep[i]);
     return std::uint32_t((alias[i] & alias_mask) | (i & ~alias_mask));
-  }
-
-  // A point i in [0, n) from the 16 low bits of `bits` (n <= 2^12, so the
-  // product stays below 2^28); false, and the draw must be made again, with
-  // probability below n / 2^16 (Lemire's method, unbiased).
-  static bool point_of(std::uint32_t bits, std::int32_t n, std::int32_t threshold, std::int32_t& i)
-  {
-    const std::int32_t product = std::int32_t(bits & 0xFFFF) * n;
-    i = product >> 16;
-    return (product & 0xFFFF) >= threshold;
   }
 
   // The triples of `draw()` when n <= small_limit, a chunk of T triples at
@@ -343,7 +333,7 @@ private:
       for(std::size_t j = 0; j < draws; ++j)
       {
         std::int32_t i;
-        accepted[j] = point_of(low_bits[j], n, threshold, i);
+        accepted[j] = Random::draw16(low_bits[j], n, threshold, i);
         point[j] = std::int32_t(choose(i, high_bits[j], keep, alias));
       }
       const std::int32_t *first = point, *second = point + triples, *third = point + 2 * triples;
@@ -565,7 +555,7 @@ public:
     }
     const std::uint32_t lives = std::uint32_t((std::max)(std::size_t(1), m_live.size()));
     m_live_threshold = Random::rejection_threshold21(lives);
-    m_live_threshold16 = std::int32_t((1u << 16) % lives);
+    m_live_threshold16 = Random::rejection_threshold16(lives);
   }
 
   std::uint32_t draw_point(Random& rng)
@@ -729,14 +719,14 @@ private:
       for(std::size_t j = 0; j < chunk; ++j)
       {
         // 16 bits for the live cell, 14 for each coordinate.
-        const std::int32_t product = std::int32_t(low_bits[j] & 0xFFFF) * lives;
-        const std::int32_t l = product >> 16;
+        std::int32_t l;
+        const bool accepted = Random::draw16(low_bits[j], lives, threshold, l);
         const Live_cell& cell = cells[l];
         x[j] = cell.x + fraction(low_bits[j] >> 16);
         y[j] = cell.y + fraction(high_bits[j]);
         z[j] = cell.z + fraction(high_bits[j] >> 14);
         live[j] = l;
-        kept[j] = ((product & 0xFFFF) >= threshold) & (x[j] * x[j] + y[j] * y[j] + z[j] * z[j] <= ball);
+        kept[j] = std::int32_t(accepted) & std::int32_t(x[j] * x[j] + y[j] * y[j] + z[j] * z[j] <= ball);
       }
       std::size_t centers = 0;
       for(std::size_t j = 0; j < chunk; ++j)

@@ -88,7 +88,7 @@ public:
     m_filter_shift = 32 - (filter_bits_log2 - 5);
     m_keys.resize(max_draws);
     for(std::int32_t i = 0; i < 3; ++i)
-      m_rejection_threshold[i] = (n <= small_limit) ? std::int32_t((1u << 16) % (n - i)) : 0;
+      m_rejection_threshold[i] = (n <= small_limit) ? Random::rejection_threshold16(n - i) : 0;
   }
 
   void start_run()
@@ -199,14 +199,12 @@ private:
                        threshold_c = m_rejection_threshold[2];
     for(std::size_t i = begin; i < end; ++i)
     {
-      const std::int32_t product_a = std::int32_t(m_low_bits[i] & 0xFFFF) * n;
-      const std::int32_t product_b = std::int32_t(m_low_bits[i] >> 16) * (n - 1);
-      const std::int32_t product_c = std::int32_t(m_high_bits[i] & 0xFFFF) * (n - 2);
-      m_accepted[i] = ((product_a & 0xFFFF) >= threshold_a) & ((product_b & 0xFFFF) >= threshold_b) &
-                      ((product_c & 0xFFFF) >= threshold_c);
-      const std::int32_t a = product_a >> 16;
+      std::int32_t a, b, c;
+      m_accepted[i] = std::int32_t(Random::draw16(m_low_bits[i], n, threshold_a, a)) &
+                      std::int32_t(Random::draw16(m_low_bits[i] >> 16, n - 1, threshold_b, b)) &
+                      std::int32_t(Random::draw16(m_high_bits[i], n - 2, threshold_c, c));
       std::int32_t first, middle, last;
-      distinct_and_sorted(a, product_b >> 16, product_c >> 16, first, middle, last);
+      distinct_and_sorted(a, b, c, first, middle, last);
       m_first[i] = first;
       m_middle[i] = middle;
       m_last[i] = last;

@@ -46,18 +46,10 @@ public:
   /// of a division in the common case).
   std::uint32_t uniform_index(std::uint32_t n)
   {
-    std::uint64_t m = std::uint64_t(std::uint32_t((*this)() >> 32)) * n;
-    std::uint32_t low = std::uint32_t(m);
-    if(low < n)
-    {
-      const std::uint32_t threshold = std::uint32_t(-n) % n;
-      while(low < threshold)
-      {
-        m = std::uint64_t(std::uint32_t((*this)() >> 32)) * n;
-        low = std::uint32_t(m);
-      }
-    }
-    return std::uint32_t(m >> 32);
+    std::uint32_t x;
+    while(!draw32(std::uint32_t((*this)() >> 32), n, x))
+      ;
+    return x;
   }
 
   /// Uniform double in [0, 1), from the 53 high bits.
@@ -91,15 +83,30 @@ public:
   }
 
   /// Uniform integer in [0, range), range > 0, from 32 random bits
-  /// (Lemire's method): sets x and returns true, or returns false, with
-  /// probability below range / 2^32, when the draw must be made again to
-  /// stay unbiased.
+  /// (Lemire's method): sets x to (bits * range) >> 32 and returns false,
+  /// with probability below range / 2^32, when the draw must be made again
+  /// to stay unbiased. The division that finds the threshold is only made
+  /// when the low bits of the product fall below range.
   static bool draw32(std::uint32_t bits, std::uint32_t range, std::uint32_t& x)
   {
     const std::uint64_t product = std::uint64_t(bits) * range;
     x = std::uint32_t(product >> 32);
     const std::uint32_t low = std::uint32_t(product);
     return low >= range || low >= std::uint32_t(-range) % range;
+  }
+
+  /// Uniform integers in [0, range) for range <= 2^12 from the 16 low bits
+  /// of `bits` (Lemire's method on 16 bits), in 32-bit signed arithmetic
+  /// (the product stays below 2^28) so that loops over them vectorize:
+  /// `draw16(bits, range, rejection_threshold16(range), x)` sets x to
+  /// ((bits mod 2^16) * range) >> 16 and returns false, with probability
+  /// below range / 2^16, when the draw must be made again.
+  static std::int32_t rejection_threshold16(std::uint32_t range) { return std::int32_t((1u << 16) % range); }
+  static bool draw16(std::uint32_t bits, std::int32_t range, std::int32_t threshold, std::int32_t& x)
+  {
+    const std::int32_t product = std::int32_t(bits & 0xFFFF) * range;
+    x = product >> 16;
+    return (product & 0xFFFF) >= threshold;
   }
 
 private:
