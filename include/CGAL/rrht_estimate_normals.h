@@ -197,7 +197,7 @@ inline Eigen::Vector3d estimate_normal(std::size_t position, std::size_t input_i
     scratch.cubes.prepare(points, neighborhood.radius);
     return rotated_hough_transforms(neighborhood, scratch.cubes, rng, settings, scratch);
   case Sampling::UNIF:
-    scratch.unif.prepare(points, neighborhood.radius);
+    scratch.unif.prepare(points, neighborhood.radius, rng);
     return rotated_hough_transforms(neighborhood, scratch.unif, rng, settings, scratch);
   case Sampling::POINTS:
   default:

@@ -2,10 +2,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The instruction set of the loops that run for every plane hypothesis: the
-// draw of triples (`Points_sampler`, `Cubes_sampler`, and the draws of
-// points of `Unif_sampler`) and the planes of a batch (`Plane_batch`); and
-// of the rotation of a neighborhood for each accumulator
-// (`internal::rotate()`).
+// draw of triples (`Points_sampler`, and `Weighted_points_sampler` for
+// RRHT_Cubes and RRHT_Unif) and the planes of a batch (`Plane_batch`); of
+// the rotation of a neighborhood for each accumulator (`internal::rotate()`);
+// and of the lattice of RRHT_Unif, for each neighborhood (`Unif_sampler`).
 // They also get an AVX2 version, chosen at run time, that gives the same
 // results as the baseline one, bit for bit.
 
@@ -42,7 +42,7 @@
 namespace CGAL {
 namespace RRHT {
 
-/// The instruction sets of the loops of `Points_sampler`, `Cubes_sampler`,
+/// The instruction sets of the loops of `Points_sampler`, `Weighted_points_sampler`,
 /// `Unif_sampler`, `Plane_batch` and `internal::rotate()`.
 enum class Instruction_set
 {
@@ -76,7 +76,7 @@ __attribute__((target("avx2"), flatten)) void run_for_avx2(const Loop& loop)
 #endif
 } // namespace internal
 
-/// Runs `loop()`, a loop of `Points_sampler`, `Cubes_sampler`,
+/// Runs `loop()`, a loop of `Points_sampler`, `Weighted_points_sampler`,
 /// `Unif_sampler`, `Plane_batch` or `internal::rotate()`, compiled for
 /// `instruction_set`.
 template <typename Loop>

@@ -244,7 +244,7 @@ private:
   // through (a rare collision of two different triples only costs a redraw).
   static std::uint64_t key(const Triple& t)
   {
-    if(t[2] < Random::bits21_limit)
+    if(t[2] < (1u << 21))
       return exact_key(t);
     Random mixer(t[0] | (std::uint64_t(t[1]) << 32), t[2]);
     return mixer();

@@ -67,21 +67,6 @@ public:
     return q.normalized().toRotationMatrix();
   }
 
-  /// Uniform integers in [0, range) for range < 2^21 from 21 random bits,
-  /// three per random word (Lemire's method on 21 bits): `draw21(bits,
-  /// range, rejection_threshold21(range), x)` sets x to (bits * range) >> 21
-  /// and returns false, with probability below range / 2^21, when the low
-  /// bits of the product fall below 2^21 mod range: the draw must then be
-  /// made again to stay unbiased.
-  static constexpr std::uint32_t bits21_limit = 1u << 21;
-  static std::uint32_t rejection_threshold21(std::uint32_t range) { return bits21_limit % range; }
-  static bool draw21(std::uint64_t bits, std::uint32_t range, std::uint32_t threshold, std::uint32_t& x)
-  {
-    const std::uint64_t product = (bits & (bits21_limit - 1)) * range;
-    x = std::uint32_t(product >> 21);
-    return std::uint32_t(product & (bits21_limit - 1)) >= threshold;
-  }
-
   /// Uniform integer in [0, range), range > 0, from 32 random bits
   /// (Lemire's method): sets x to (bits * range) >> 32 and returns false,
   /// with probability below range / 2^32, when the draw must be made again
