@@ -471,6 +471,13 @@ TEST_CASE("Bad input: a clear exception or a documented result, never NaN", "[ap
       for(const auto& normal : estimate(line, 10, maps.sampling(sampling)))
         CHECK(normal == null);
   }
+  SECTION("identical points in a ball of radius below 1e-300: the null vector")
+  {
+    Pair_cloud<SC> same(50, PN(SC::Point_3(1, 2, 3), SC::Vector_3(1, 1, 1)));
+    for(Sampling sampling : { Sampling::POINTS, Sampling::CUBES, Sampling::UNIF })
+      for(const auto& normal : estimate(same, 10, maps.sampling(sampling).neighbor_radius(1e-320)))
+        CHECK(normal == null);
+  }
   SECTION("k larger than the number of points: all points are neighbors")
   {
     Pair_cloud<SC> cloud = to_pairs<SC>(rrht_test::plane(20, 3));

@@ -185,8 +185,11 @@ inline Eigen::Vector3d estimate_normal(std::size_t position, std::size_t input_i
   Neighborhood& neighborhood = scratch.neighborhood;
   search.find(position, settings.k, settings.neighbor_radius, neighborhood, scratch.search);
   const std::vector<Eigen::Vector3d>& points = neighborhood.points;
-  if(points.size() < 3 || !(neighborhood.radius > 0))
-    return Eigen::Vector3d::Zero(); // fewer than 3 distinct points
+  // Fewer than 3 distinct points, or a ball so small (a `neighbor_radius`
+  // below 1e-300) that the points cannot be scaled to the unit ball, nor to
+  // the grids of RRHT_Cubes and RRHT_Unif, without overflow.
+  if(points.size() < 3 || !(neighborhood.radius >= 1e-300))
+    return Eigen::Vector3d::Zero();
 
   // One random stream per point: the same normals whatever the threads.
   Random rng(settings.seed, input_index);
@@ -343,7 +346,8 @@ Count count_in_range(const T& value, std::uint64_t low, std::uint64_t high, cons
    The output normals are unit vectors, randomly oriented (use
    `CGAL::mst_orient_normals()` to orient them). Where no plane can be formed
    (fewer than 3 distinct points in the neighborhood, all of them collinear,
-   or a point with a non-finite coordinate), the normal is the null vector
+   a `neighbor_radius` below 1e-300, or a point with a non-finite
+   coordinate), the normal is the null vector
    `CGAL::NULL_VECTOR`. Points with a non-finite coordinate are not
    neighbors of any point.
 
