@@ -230,7 +230,8 @@ public:
     const std::int32_t R = std::int32_t(m_c) * L, D = 2 * R + 1;
     if(m_row_extents.empty())
     {
-      // And a row of its own for each candidate row without nodes.
+      // The (2R + 1)^2 rows, then one more per candidate row: the row that
+      // `add_spans()` writes to when that candidate row has no nodes.
       m_row_extents.assign(std::size_t(D) * D + candidate_rows, Row_extent{ no_node, 0 });
       m_row_base.assign(std::size_t(D) * D, 0);
       m_touched_rows.resize(std::size_t(D) * D);
