@@ -104,11 +104,11 @@ private:
 // Writes the points with their normals to `path` through a temporary file
 // renamed at the end, so that a failed run never leaves a partial file in
 // place of a good one.
-bool write_atomically(const std::string& path, const std::vector<Point_with_normal>& points)
+bool write_atomically(const std::string& path, const std::vector<Point_with_normal>& points, int precision)
 {
   const std::string e = extension(path);
   const std::string temporary = path + ".partial." + std::to_string(::getpid()) + "." + e;
-  const auto np = CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()).stream_precision(9);
+  const auto np = CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()).stream_precision(precision);
   const bool written = (e == "ply") ? CGAL::IO::write_PLY(temporary, points, np) : CGAL::IO::write_XYZ(temporary, points, np);
   if(!written || std::rename(temporary.c_str(), path.c_str()) != 0)
   {
@@ -148,6 +148,8 @@ int main(int argc, char** argv)
     ("no-confidence-interval", "do not stop early on disjoint confidence intervals (eq. 10)")
     ("seed", po::value<long long>()->default_value(0), "random seed (0 to 4294967295)")
     ("threads", po::value<long long>()->default_value(0, "all cores"), "number of threads (0 to 1024)")
+    ("precision", po::value<long long>()->default_value(9),
+     "significant digits written (1 to 17; 17 writes the computed doubles exactly)")
     ("orient", "orient the normals with CGAL::mst_orient_normals() (18 neighbors)")
     ("quiet,q", "no progress bar");
   po::options_description hidden;
@@ -184,6 +186,7 @@ int main(int argc, char** argv)
     check_range<long long>(options, "slices", 1, 1000);
     check_range<long long>(options, "presampling", 1, 32);
     check_range<double>(options, "cluster-angle", 0, 180);
+    check_range<long long>(options, "precision", 1, 17);
     check_range<double>(options, "radius", 0, 1e300);
     if(options["planes"].as<long long>() != 0)
       check_range<long long>(options, "planes", 1, 100000000);
@@ -294,7 +297,7 @@ int main(int argc, char** argv)
     without_normal += (pn.second == CGAL::NULL_VECTOR);
 
   // Write.
-  if(!write_atomically(output, points))
+  if(!write_atomically(output, points, int(options["precision"].as<long long>())))
   {
     std::cerr << "rrht_normals: cannot write '" << output << "'" << std::endl;
     return runtime_error;

@@ -1,24 +1,88 @@
 #!/usr/bin/env bash
-# The tests: installs what is missing, builds in Release (with a smoke run of
-# the benchmark) and runs the whole suite with ctest, then builds again with AddressSanitizer and
-# UndefinedBehaviorSanitizer and runs it once more (RRHT_SANITIZE=0 skips
-# that second pass).
+# The tests: installs what is missing, then
+#  1. builds in Release against the system's CGAL (with a smoke run of the
+#     benchmark) and runs the whole suite with ctest;
+#  2. builds again with AddressSanitizer and UndefinedBehaviorSanitizer and
+#     runs it once more (RRHT_SANITIZE=0 skips this pass);
+#  3. builds in Release and runs the suite against each CGAL release of
+#     ../shared/cgal (5.6.1, 6.0.1, 6.2.1: see its README), unpacked under
+#     build/cgal without installing anything, and checks that the normals
+#     are the same, bit for bit, as with the system's CGAL (skipped, with a
+#     message, when ../shared/cgal is absent; RRHT_CGAL_VERSIONS=0 skips it);
+#  4. builds in Release with clang and runs the suite (RRHT_CLANG=0 skips it).
+# Every build fails on a compiler warning.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-bash "$root/scripts/install_dependencies.sh"
+extra_packages=()
+[ "${RRHT_CLANG:-1}" != "0" ] && extra_packages+=(clang)
+bash "$root/scripts/install_dependencies.sh" "${extra_packages[@]}"
 jobs=$(nproc)
 
 run_suite() { # build folder, extra cmake arguments...
   local build=$1; shift
-  cmake -S "$root" -B "$build" -DCGAL_RRHT_BUILD_TESTS=ON -DCGAL_RRHT_BUILD_EXAMPLES=ON "$@" > /dev/null
+  cmake -S "$root" -B "$build" -DCGAL_RRHT_BUILD_TESTS=ON -DCGAL_RRHT_BUILD_EXAMPLES=ON \
+        -DCGAL_RRHT_WARNINGS_AS_ERRORS=ON "$@" > /dev/null
   cmake --build "$build" -j"$jobs"
   (cd "$build" && ctest --output-on-failure -j1)
 }
 
-echo "== Release build and tests"
+# The same input and seed give the same normals, written exactly (17
+# digits), with the rrht_normals of build $1 as with that of build $2.
+same_normals() { # build, reference build
+  local data=$root/examples/data runs=(
+    ""
+    "--planes 300 --rotations 2 --sampling cubes"
+    "--planes 300 --rotations 2 --sampling unif --aggregation mean"
+    "--radius 0.05 -k 0 --seed 7"
+    "--radius 0.05 -k 30 --aggregation best --slices 12")
+  local i=0
+  for run in "${runs[@]}"; do
+    for build in "$1" "$2"; do
+      # shellcheck disable=SC2086
+      "$build/examples/rrht_normals" "$data/fandisk_20k.xyz" "$build/same_normals_$i.xyz" $run --precision 17 -q > /dev/null
+    done
+    if ! cmp "$1/same_normals_$i.xyz" "$2/same_normals_$i.xyz"; then
+      echo "different normals from $1 and $2 with: rrht_normals fandisk_20k.xyz $run" >&2
+      return 1
+    fi
+    i=$((i + 1))
+  done
+  echo "same normals, bit for bit, as $2 (${#runs[@]} settings of rrht_normals on fandisk_20k.xyz)"
+}
+
+echo "== Release build and tests (system CGAL)"
 run_suite "$root/build/release" -DCMAKE_BUILD_TYPE=Release -DCGAL_RRHT_BUILD_BENCHMARKS=ON
+
 if [ "${RRHT_SANITIZE:-1}" != "0" ]; then
   echo "== AddressSanitizer + UndefinedBehaviorSanitizer build and tests"
   ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
     run_suite "$root/build/sanitize" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCGAL_RRHT_SANITIZE=ON
+fi
+
+if [ "${RRHT_CGAL_VERSIONS:-1}" != "0" ]; then
+  shared_cgal=$root/../shared/cgal
+  if [ ! -d "$shared_cgal" ]; then
+    echo "== SKIPPED: the builds against CGAL 5.6.1, 6.0.1 and 6.2.1 ($shared_cgal not found)"
+  else
+    unpacked=$root/build/cgal
+    mkdir -p "$unpacked"
+    for version in 5.6.1 6.0.1 6.2.1; do
+      if [ "$version" = 5.6.1 ]; then
+        [ -d "$unpacked/CGAL-5.6.1" ] || tar -xJf "$shared_cgal/CGAL-5.6.1-headers.tar.xz" -C "$unpacked"
+        cgal_dir=$unpacked/CGAL-5.6.1
+      else
+        [ -d "$unpacked/$version" ] || dpkg -x "$shared_cgal/libcgal-dev_${version}-1_amd64.deb" "$unpacked/$version"
+        cgal_dir=$unpacked/$version/usr/lib/x86_64-linux-gnu/cmake/CGAL
+      fi
+      echo "== Release build and tests against CGAL $version"
+      run_suite "$root/build/cgal-$version" -DCMAKE_BUILD_TYPE=Release -DCGAL_DIR="$cgal_dir"
+      same_normals "$root/build/cgal-$version" "$root/build/release"
+    done
+  fi
+fi
+
+if [ "${RRHT_CLANG:-1}" != "0" ]; then
+  echo "== Release build and tests with clang"
+  run_suite "$root/build/clang" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++
+  same_normals "$root/build/clang" "$root/build/release"
 fi

@@ -45,6 +45,8 @@
 #include <vector>
 
 namespace CGAL {
+template <typename Point, typename Vector> class Point_set_3;
+
 namespace RRHT {
 /// \cond SKIP_IN_MANUAL
 namespace internal {
@@ -320,6 +322,24 @@ Count count_in_range(const T& value, std::uint64_t low, std::uint64_t high, cons
   return static_cast<Count>(value);
 }
 
+/// Whether normals can be written: a range needs a `normal_map` (checked at
+/// compile time, as \cgal does); a `CGAL::Point_set_3` may use its own normal
+/// map, if it has one (checked at run time, the same on every \cgal version).
+template <typename PointRange, typename NamedParameters>
+bool has_normal_map(const PointRange&, const NamedParameters&)
+{
+  static_assert(!CGAL::parameters::is_default_parameter<NamedParameters, CGAL::internal_np::normal_t>::value,
+                "CGAL::rrht_estimate_normals(): no normal map");
+  return true;
+}
+
+template <typename Point, typename Vector, typename NamedParameters>
+bool has_normal_map(const Point_set_3<Point, Vector>& points, const NamedParameters&)
+{
+  return !CGAL::parameters::is_default_parameter<NamedParameters, CGAL::internal_np::normal_t>::value ||
+         points.has_normal_map();
+}
+
 } // namespace internal
 /// \endcond
 } // namespace RRHT
@@ -495,11 +515,12 @@ void rrht_estimate_normals(PointRange& points,
   typedef typename Kernel::FT FT;
   typedef typename Kernel::Vector_3 Vector_3;
 
-  CGAL_static_assertion_msg(NP_helper::has_normal_map(), "Error: no normal map");
 #ifndef CGAL_LINKED_WITH_TBB
-  CGAL_static_assertion_msg(!(std::is_convertible<ConcurrencyTag, Parallel_tag>::value),
-                            "Parallel_tag is enabled but TBB is unavailable.");
+  static_assert(!(std::is_convertible<ConcurrencyTag, Parallel_tag>::value),
+                "Parallel_tag is enabled but TBB is unavailable.");
 #endif
+  RRHT::internal::check(RRHT::internal::has_normal_map(points, np),
+                        "the point set has no normal map: call add_normal_map() first, or pass a normal_map");
 
   Point_map point_map = NP_helper::get_point_map(points, np);
   Normal_map normal_map = NP_helper::get_normal_map(points, np);

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <iostream>
 #include <utility>
 #include <vector>
@@ -13,6 +14,12 @@ typedef std::pair<Kernel::Point_3, Kernel::Vector_3> Point_with_normal;
 
 int main()
 {
+  if(std::strcmp(CGAL_VERSION_STR, EXPECTED_CGAL_VERSION) != 0)
+  {
+    std::cerr << "compiled against the headers of CGAL " << CGAL_VERSION_STR << ", expected "
+              << EXPECTED_CGAL_VERSION << std::endl;
+    return EXIT_FAILURE;
+  }
   std::vector<Point_with_normal> points;
   for(int i = 0; i < 20; ++i)
     for(int j = 0; j < 20; ++j)
@@ -28,6 +35,6 @@ int main()
       std::cerr << "wrong normal " << pn.second << std::endl;
       return EXIT_FAILURE;
     }
-  std::cout << "find_package(CGAL_RRHT): " << points.size() << " normals estimated" << std::endl;
+  std::cout << "find_package(CGAL_RRHT) with CGAL " << CGAL_VERSION_STR << ": " << points.size() << " normals estimated" << std::endl;
   return EXIT_SUCCESS;
 }

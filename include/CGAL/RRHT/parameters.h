@@ -8,6 +8,7 @@
 
 #include <CGAL/Named_function_parameters.h>
 
+#include <functional>
 #include <type_traits>
 
 namespace CGAL {
@@ -53,15 +54,50 @@ struct Named_function_parameters
   Named_function_parameters(const T& v) : Cgal_parameters(v) {}
   Named_function_parameters(const T& v, const Base& b) : Cgal_parameters(v, b) {}
 
-  // CGAL's parameters, generated from CGAL's own list so that none is missing.
-#define CGAL_add_named_parameter(X, Y, Z)                                       \
+  // CGAL's parameters, generated from CGAL's own list so that none is
+  // missing, whatever the version: CGAL 5.6 and later also list parameters
+  // held by reference (`_cref_only`, `_ref_only`) and parameters kept for
+  // compatibility with Boost's syntax, which are members like the others.
+#define CGAL_RRHT_MEMBER_BY_VALUE(X, Y, Z)                                      \
   template <typename K>                                                         \
   Named_function_parameters<K, CGAL::internal_np::X, self> Z(const K& k) const  \
   {                                                                             \
     return Named_function_parameters<K, CGAL::internal_np::X, self>(k, *this);  \
   }
+#define CGAL_RRHT_MEMBER_BY_REFERENCE(X, Y, Z, CONST, WRAP)                     \
+  template <typename K>                                                         \
+  Named_function_parameters<std::reference_wrapper<CONST K>, CGAL::internal_np::X, self> Z(CONST K& k) const \
+  {                                                                             \
+    return Named_function_parameters<std::reference_wrapper<CONST K>, CGAL::internal_np::X, self>(WRAP(k), *this); \
+  }
+#define CGAL_add_named_parameter(X, Y, Z) CGAL_RRHT_MEMBER_BY_VALUE(X, Y, Z)
+#define CGAL_add_named_parameter_with_compatibility(X, Y, Z) CGAL_RRHT_MEMBER_BY_VALUE(X, Y, Z)
+#define CGAL_add_extra_named_parameter_with_compatibility(X, Y, Z) CGAL_RRHT_MEMBER_BY_VALUE(X, Y, Z)
+#define CGAL_add_named_parameter_with_compatibility_cref_only(X, Y, Z) CGAL_RRHT_MEMBER_BY_REFERENCE(X, Y, Z, const, std::cref)
+#define CGAL_add_named_parameter_with_compatibility_ref_only(X, Y, Z) CGAL_RRHT_MEMBER_BY_REFERENCE(X, Y, Z, , std::ref)
 #include <CGAL/STL_Extension/internal/parameters_interface.h>
 #undef CGAL_add_named_parameter
+#undef CGAL_add_named_parameter_with_compatibility
+#undef CGAL_add_extra_named_parameter_with_compatibility
+#undef CGAL_add_named_parameter_with_compatibility_cref_only
+#undef CGAL_add_named_parameter_with_compatibility_ref_only
+#undef CGAL_RRHT_MEMBER_BY_VALUE
+#undef CGAL_RRHT_MEMBER_BY_REFERENCE
+
+  /// Appends the parameter of the one-parameter chain `np` (and of `nps`), as
+  /// `CGAL::Named_function_parameters::combine()` of \cgal 6 does, and stays
+  /// an RRHT chain.
+  template <typename OT, typename OTag>
+  Named_function_parameters<OT, OTag, self> combine(const CGAL::Named_function_parameters<OT, OTag>& np) const
+  {
+    return Named_function_parameters<OT, OTag, self>(CGAL::internal_np::get_reference(np.v), *this);
+  }
+
+  template <typename OT, typename OTag, typename... NPS>
+  auto combine(const CGAL::Named_function_parameters<OT, OTag>& np, const NPS&... nps) const
+  {
+    return combine(np).combine(nps...);
+  }
 
   // RRHT's parameters.
 #define CGAL_RRHT_MEMBER(TAG, NAME)                                             \
@@ -89,14 +125,31 @@ typedef RRHT::Named_function_parameters<bool, CGAL::internal_np::all_default_t> 
 /// An empty chain, to be continued with any parameter.
 inline Default_named_parameters default_values() { return Default_named_parameters(); }
 
-#define CGAL_add_named_parameter(X, Y, Z)                                       \
+#define CGAL_RRHT_FUNCTION_BY_VALUE(X, Y, Z)                                    \
   template <typename K>                                                         \
   RRHT::Named_function_parameters<K, CGAL::internal_np::X> Z(const K& p)        \
   {                                                                             \
     return RRHT::Named_function_parameters<K, CGAL::internal_np::X>(p);         \
   }
+#define CGAL_RRHT_FUNCTION_BY_REFERENCE(X, Y, Z, CONST, WRAP)                   \
+  template <typename K>                                                         \
+  RRHT::Named_function_parameters<std::reference_wrapper<CONST K>, CGAL::internal_np::X> Z(CONST K& p) \
+  {                                                                             \
+    return RRHT::Named_function_parameters<std::reference_wrapper<CONST K>, CGAL::internal_np::X>(WRAP(p)); \
+  }
+#define CGAL_add_named_parameter(X, Y, Z) CGAL_RRHT_FUNCTION_BY_VALUE(X, Y, Z)
+#define CGAL_add_named_parameter_with_compatibility(X, Y, Z) CGAL_RRHT_FUNCTION_BY_VALUE(X, Y, Z)
+#define CGAL_add_extra_named_parameter_with_compatibility(X, Y, Z) CGAL_RRHT_FUNCTION_BY_VALUE(X, Y, Z)
+#define CGAL_add_named_parameter_with_compatibility_cref_only(X, Y, Z) CGAL_RRHT_FUNCTION_BY_REFERENCE(X, Y, Z, const, std::cref)
+#define CGAL_add_named_parameter_with_compatibility_ref_only(X, Y, Z) CGAL_RRHT_FUNCTION_BY_REFERENCE(X, Y, Z, , std::ref)
 #include <CGAL/STL_Extension/internal/parameters_interface.h>
 #undef CGAL_add_named_parameter
+#undef CGAL_add_named_parameter_with_compatibility
+#undef CGAL_add_extra_named_parameter_with_compatibility
+#undef CGAL_add_named_parameter_with_compatibility_cref_only
+#undef CGAL_add_named_parameter_with_compatibility_ref_only
+#undef CGAL_RRHT_FUNCTION_BY_VALUE
+#undef CGAL_RRHT_FUNCTION_BY_REFERENCE
 
 #define CGAL_RRHT_FREE_FUNCTION(TAG, NAME)                                      \
   template <typename K>                                                         \
@@ -106,6 +159,7 @@ inline Default_named_parameters default_values() { return Default_named_paramete
   }
 CGAL_RRHT_NAMED_PARAMETERS(CGAL_RRHT_FREE_FUNCTION)
 #undef CGAL_RRHT_FREE_FUNCTION
+#undef CGAL_RRHT_NAMED_PARAMETERS
 
 /// \cond SKIP_IN_MANUAL
 namespace internal {
