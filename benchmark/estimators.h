@@ -11,6 +11,9 @@
 #include "measure.h"
 
 #include <CGAL/rrht_estimate_normals.h>
+// The components measured on their own by `neighbor_queries()`.
+#include <CGAL/RRHT/internal/Neighbor_search.h>
+#include <CGAL/RRHT/internal/for_each_block.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/compute_average_spacing.h>
 #include <CGAL/jet_estimate_normals.h>
@@ -109,7 +112,7 @@ inline Estimator rrht(const Rrht_setting& s, const Neighborhood& n)
 
 /// The bare cost of RRHT's neighborhoods: what `rrht_estimate_normals()`
 /// does besides its Hough transforms. The copy of the cloud, the Hilbert sort
-/// and the kd-tree of `CGAL::RRHT::Neighbor_search`, then the neighborhood of
+/// and the kd-tree of `CGAL::RRHT::internal::Neighbor_search`, then the neighborhood of
 /// every point, over the same blocks and threads
 /// (`CGAL::RRHT::internal::for_each_block`), and nothing done with them.
 /// Writes no normals.
@@ -118,7 +121,7 @@ inline Estimator neighbor_queries(const Neighborhood& n)
   Estimator e;
   e.name = "queries" + n.suffix();
   e.estimate = [n](Cloud& cloud, unsigned int) {
-    typedef CGAL::RRHT::Neighbor_search Search;
+    typedef CGAL::RRHT::internal::Neighbor_search Search;
     std::vector<Search::Indexed_point> points;
     for(const Sample& s : cloud)
       points.emplace_back(Search::Point(s.point.x(), s.point.y(), s.point.z()), points.size());
@@ -126,7 +129,7 @@ inline Estimator neighbor_queries(const Neighborhood& n)
     struct Scratch
     {
       Search::Scratch search;
-      CGAL::RRHT::Neighborhood neighborhood;
+      CGAL::RRHT::internal::Neighborhood neighborhood;
     };
     const std::function<bool(double)> no_callback;
     CGAL::RRHT::internal::Progress progress(no_callback, search.size());

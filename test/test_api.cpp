@@ -21,7 +21,6 @@
 #include <atomic>
 #include <cmath>
 #include <cstdlib>
-#include <new>
 #include <functional>
 #include <limits>
 #include <list>
@@ -266,32 +265,6 @@ TEST_CASE("Same seed, same normals, bit for bit, whatever the concurrency and th
 }
 #endif
 
-TEST_CASE("The neighborhood rotated into the unit ball: Eigen's product in single precision, with each instruction set", "[api][parallel]")
-{
-  using namespace CGAL::RRHT;
-  Random rng(21, 22);
-  std::vector<Eigen::Vector3d> points;
-  for(int i = 0; i < 103; ++i) // an odd number: the vectorized loop has a tail
-    points.emplace_back(rng.uniform_real() - 0.5, 1e3 * rng.uniform_real(), -1e-3 * rng.uniform_real());
-  std::vector<Instruction_set> instruction_sets = { Instruction_set::baseline };
-  if(best_instruction_set() == Instruction_set::avx2)
-    instruction_sets.push_back(Instruction_set::avx2);
-  for(int round = 0; round < 20; ++round)
-  {
-    const Eigen::Matrix3d matrix = rng.uniform_rotation() / (0.1 + rng.uniform_real());
-    for(Instruction_set instruction_set : instruction_sets)
-    {
-      std::vector<Eigen::Vector3f> rotated(points.size());
-      internal::rotate(points, matrix, rotated, instruction_set);
-      for(std::size_t i = 0; i < points.size(); ++i)
-      {
-        INFO("round " << round << ", point " << i << ", instruction set " << int(instruction_set));
-        REQUIRE(rotated[i] == (matrix * points[i]).cast<float>().eval());
-      }
-    }
-  }
-}
-
 TEST_CASE("The callback reports progress, and returning false stops, leaving the rest unchanged", "[api][callback]")
 {
   const rrht_test::Cloud truth = noisy_cube(5000);
@@ -385,55 +358,6 @@ TEST_CASE("Ball neighborhoods: with and without a cap on the number of points", 
     CHECK(normals_of<SC>(tiny) == normals_of<SC>(knn));
   }
 }
-
-// Counting allocations: every allocation of the program goes through this
-// replacement of the global operator new (not under AddressSanitizer, which
-// has its own).
-#if !defined(__SANITIZE_ADDRESS__)
-namespace {
-std::atomic<std::size_t> number_of_allocations(0);
-}
-void* operator new(std::size_t size)
-{
-  ++number_of_allocations;
-  if(void* p = std::malloc(size == 0 ? 1 : size))
-    return p;
-  throw std::bad_alloc();
-}
-// GCC cannot see that this free() matches the malloc() of the replacement above.
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-#pragma GCC diagnostic pop
-
-TEST_CASE("No allocation per point but the two of CGAL's k-nearest-neighbor query", "[api][memory]")
-{
-  auto allocations_per_point = [](unsigned int k, double radius, Sampling sampling) {
-    auto count = [&](std::size_t n) {
-      Pair_cloud<SC> cloud = to_pairs<SC>(noisy_cube(n));
-      const std::size_t before = number_of_allocations;
-      CGAL::rrht_estimate_normals<CGAL::Sequential_tag>(
-        cloud, k, params::extend(pair_maps<SC>).neighbor_radius(radius).sampling(sampling));
-      return double(number_of_allocations - before);
-    };
-    // Set-up costs cancel out; what is left is the cost of one more point.
-    return (count(4000) - count(2000)) / 2000;
-  };
-  for(Sampling sampling : { Sampling::POINTS, Sampling::CUBES, Sampling::UNIF })
-  {
-    INFO("sampling " << int(sampling));
-    // Orthogonal_k_neighbor_search allocates its queue and a 3-vector per query.
-    const double knn = allocations_per_point(30, 0., sampling);
-    WARN("k-neighborhoods, sampling " << int(sampling) << ": " << knn << " allocations per point");
-    CHECK(knn <= 2.1);
-    // The ball search through Fuzzy_sphere allocates nothing per query.
-    const double ball = allocations_per_point(0, 0.2, sampling);
-    WARN("balls, sampling " << int(sampling) << ": " << ball << " allocations per point");
-    CHECK(ball <= 0.1);
-  }
-}
-#endif
 
 TEST_CASE("Bad input: a clear exception or a documented result, never NaN", "[api][bad-input]")
 {

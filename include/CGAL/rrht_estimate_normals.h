@@ -8,341 +8,38 @@
 #ifndef CGAL_RRHT_ESTIMATE_NORMALS_H
 #define CGAL_RRHT_ESTIMATE_NORMALS_H
 
-#include <CGAL/RRHT/parameters.h>
-#include <CGAL/RRHT/Neighbor_search.h>
-#include <CGAL/RRHT/Accumulator.h>
-#include <CGAL/RRHT/Instruction_set.h>
-#include <CGAL/RRHT/Plane_batch.h>
-#include <CGAL/RRHT/stopping_rules.h>
+#include <CGAL/RRHT/Aggregation.h>
 #include <CGAL/RRHT/Sampling.h>
-#include <CGAL/RRHT/aggregation.h>
-#include <CGAL/RRHT/Random.h>
+#include <CGAL/RRHT/hoeffding_number_of_planes.h>
+#include <CGAL/RRHT/parameters.h>
 
-#include <CGAL/assertions.h>
+#include <CGAL/RRHT/internal/Bin_layout.h>
+#include <CGAL/RRHT/internal/Cube_weights.h>
+#include <CGAL/RRHT/internal/Elements.h>
+#include <CGAL/RRHT/internal/Neighbor_search.h>
+#include <CGAL/RRHT/internal/Progress.h>
+#include <CGAL/RRHT/internal/Scratch.h>
+#include <CGAL/RRHT/internal/Settings.h>
+#include <CGAL/RRHT/internal/check_parameters.h>
+#include <CGAL/RRHT/internal/estimate_normal.h>
+#include <CGAL/RRHT/internal/for_each_block.h>
+
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/number_type_config.h>
 #include <CGAL/property_map.h>
 #include <CGAL/tags.h>
 
 #include <Eigen/Core>
 
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/blocked_range.h>
-#include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
-#endif
-
-#include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <cstdint>
+#include <cstddef>
 #include <functional>
-#include <iterator>
-#include <limits>
-#include <stdexcept>
-#include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
-template <typename Point, typename Vector> class Point_set_3;
-
-namespace RRHT {
-/// \cond SKIP_IN_MANUAL
-namespace internal {
-
-/// The parameters of the algorithm (paper, Section 6), once checked.
-struct Settings
-{
-  unsigned int k;                 // K, or the cap on a ball
-  double neighbor_radius;         // r, or 0 for k-neighborhoods
-  std::size_t number_of_planes;   // T_R
-  bool use_confidence_interval;   // eq. 10
-  Sampling sampling;              // Points, Cubes or Unif
-  unsigned int presampling_factor;// c
-  unsigned int number_of_rotations; // n_rot
-  Aggregation aggregation;        // m, b or c
-  double cos_cluster_angle;       // cos(a_cluster)
-  std::uint64_t seed;
-};
-
-/// The working memory of one thread, reused from point to point.
-struct Scratch
-{
-  Scratch(const Bin_layout& layout, const Cube_weights& cube_weights, unsigned int presampling_factor)
-    : accumulator(layout), cubes(cube_weights), unif(presampling_factor), triples(Plane_batch::capacity)
-  {}
-
-  Neighbor_search::Scratch search;
-  Neighborhood neighborhood;
-  std::vector<Eigen::Vector3f> rotated; // the neighborhood rotated, over its radius, in single precision
-  Accumulator accumulator;
-  Points_sampler points;
-  Cubes_sampler cubes;
-  Unif_sampler unif;
-  std::vector<Triple> triples; // a batch of draws
-  Plane_batch planes;          // and their planes
-  std::vector<Candidate_normal> candidates;
-};
-
-/// One run of the Robust Randomized Hough Transform (Section 3): draws planes
-/// through triples of `points` until T_R triples have been drawn (eq. 7) or
-/// the confidence intervals of the two most voted bins separate (eq. 10), and
-/// returns the mean normal of the most voted bin (Section 4). Triples of
-/// (nearly) collinear or repeated points define no plane and cast no vote;
-/// the paper does not check near-collinearity (Section 2), we only leave out
-/// triples whose two edges make an angle below 1e-5 radians, which would
-/// give no direction in single precision (see `Plane_batch`).
-///
-/// Triples are drawn, and their planes computed (`Plane_batch`), in
-/// batches; they vote one by one, and eq. 10 is tested after each vote at
-/// which it can hold (see `Accumulator`), so the run stops at the same vote
-/// as when drawing one triple at a time. A batch is half the votes so far
-/// plus 8 (at most `Plane_batch::capacity`, which it is without eq. 10): a run of 300 planes that does not stop early takes 9 batches
-/// rather than 20, and a run that stops wastes at most that many planes,
-/// drawn and not voted.
-template <typename Sampler>
-Candidate_normal hough_transform(const std::vector<Eigen::Vector3f>& points, Sampler& sampler, Random& rng,
-                                 const Settings& settings, Scratch& scratch)
-{
-  Accumulator& accumulator = scratch.accumulator;
-  accumulator.clear();
-  sampler.start_run();
-  std::size_t drawn = 0;
-  bool stop = false;
-  while(!stop && drawn < settings.number_of_planes)
-  {
-    const std::size_t batch =
-      settings.use_confidence_interval ? accumulator.number_of_votes() / 2 + 8 : scratch.triples.size();
-    const std::size_t wanted = (std::min)({ settings.number_of_planes - drawn, scratch.triples.size(), batch });
-    const std::size_t got = sampler.draw(rng, wanted, scratch.triples.data());
-    scratch.planes.compute(points, scratch.triples.data(), got, accumulator.layout());
-    accumulator.vote(scratch.planes, got, [&](unsigned int first, unsigned int second, std::size_t votes) {
-      return stop = settings.use_confidence_interval && confidence_intervals_are_disjoint(first, second, votes);
-    });
-    drawn += got;
-    stop |= (got < wanted); // every triple of the neighborhood has voted
-  }
-  return Candidate_normal{ accumulator.normal_of_most_voted_bin(), accumulator.votes_of_most_voted_bin() };
-}
-
-/// `points` multiplied by `matrix`, in single precision, into `out` (of the
-/// same size). Each coordinate is (m_i0 x + m_i1 y) + m_i2 z in double
-/// precision, as Eigen's product computes it (the same floats: tested), and
-/// the same bits with the loop of each instruction set (`Instruction_set.h`).
-/// For AVX2 the loop is vectorized over 4 points. It runs for every
-/// accumulator; as an Eigen product per point it took 3 to 4% of the
-/// instructions at the fast setting.
-inline void rotate(const std::vector<Eigen::Vector3d>& points, const Eigen::Matrix3d& matrix,
-                   std::vector<Eigen::Vector3f>& out, Instruction_set instruction_set)
-{
-  CGAL_precondition(out.size() == points.size());
-  // The coordinates of the points one after the other (Eigen's fixed-size
-  // vectors hold their coefficients and nothing else).
-  const Eigen::Map<const Eigen::Matrix3Xd> in(points.data()->data(), 3, Eigen::Index(points.size()));
-  Eigen::Map<Eigen::Matrix3Xf> rotated(out.data()->data(), 3, Eigen::Index(out.size()));
-  const double m00 = matrix(0, 0), m01 = matrix(0, 1), m02 = matrix(0, 2), m10 = matrix(1, 0), m11 = matrix(1, 1),
-               m12 = matrix(1, 2), m20 = matrix(2, 0), m21 = matrix(2, 1), m22 = matrix(2, 2);
-  run_with(instruction_set, [&] {
-    for(Eigen::Index i = 0; i < in.cols(); ++i)
-    {
-      const double x = in(0, i), y = in(1, i), z = in(2, i);
-      rotated(0, i) = float(m00 * x + m01 * y + m02 * z);
-      rotated(1, i) = float(m10 * x + m11 * y + m12 * z);
-      rotated(2, i) = float(m20 * x + m21 * y + m22 * z);
-    }
-  });
-}
-
-/// The normal of a neighborhood from n_rot randomly rotated accumulators
-/// (Section 4): each run sees the points rotated, its normal is rotated back,
-/// and the normals are aggregated.
-template <typename Sampler>
-Eigen::Vector3d rotated_hough_transforms(const Neighborhood& neighborhood, Sampler& sampler, Random& rng,
-                                         const Settings& settings, Scratch& scratch)
-{
-  const std::vector<Eigen::Vector3d>& points = neighborhood.points;
-  scratch.candidates.clear();
-  scratch.rotated.resize(points.size());
-  for(unsigned int r = 0; r < settings.number_of_rotations; ++r)
-  {
-    // Rotated and scaled to the unit ball: normals do not depend on the
-    // scale, and single precision keeps its relative accuracy.
-    const Eigen::Matrix3d rotation = rng.uniform_rotation();
-    rotate(points, rotation / neighborhood.radius, scratch.rotated, best_instruction_set());
-    Candidate_normal candidate = hough_transform(scratch.rotated, sampler, rng, settings, scratch);
-    candidate.normal = rotation.transpose() * candidate.normal; // back to the frame of the cloud
-    scratch.candidates.push_back(candidate);
-  }
-  return aggregate(scratch.candidates, settings.aggregation, settings.cos_cluster_angle);
-}
-
-/// The normal at the point at `position` in the search's order, the
-/// `input_index`-th of the input (Section 2): draws plane hypotheses in its
-/// neighborhood with n_rot randomly rotated accumulators and combines their
-/// winners. Returns the zero vector when no plane can be formed.
-inline Eigen::Vector3d estimate_normal(std::size_t position, std::size_t input_index, const Neighbor_search& search,
-                                       const Settings& settings, Scratch& scratch)
-{
-  Neighborhood& neighborhood = scratch.neighborhood;
-  search.find(position, settings.k, settings.neighbor_radius, neighborhood, scratch.search);
-  const std::vector<Eigen::Vector3d>& points = neighborhood.points;
-  // Fewer than 3 distinct points, or a ball so small (a `neighbor_radius`
-  // below 1e-300) that the points cannot be scaled to the unit ball, nor to
-  // the grids of RRHT_Cubes and RRHT_Unif, without overflow.
-  if(points.size() < 3 || !(neighborhood.radius >= 1e-300))
-    return Eigen::Vector3d::Zero();
-
-  // One random stream per point: the same normals whatever the threads.
-  Random rng(settings.seed, input_index);
-
-  switch(settings.sampling)
-  {
-  case Sampling::CUBES:
-    scratch.cubes.prepare(points, neighborhood.radius);
-    return rotated_hough_transforms(neighborhood, scratch.cubes, rng, settings, scratch);
-  case Sampling::UNIF:
-    scratch.unif.prepare(points, neighborhood.radius, rng);
-    return rotated_hough_transforms(neighborhood, scratch.unif, rng, settings, scratch);
-  case Sampling::POINTS:
-  default:
-    scratch.points.prepare(std::uint32_t(points.size()), settings.number_of_planes);
-    return rotated_hough_transforms(neighborhood, scratch.points, rng, settings, scratch);
-  }
-}
-
-/// Progress report and interruption through the user's callback, called
-/// after every block of points: directly in a sequential run; in a parallel
-/// run by the thread that finishes a block, one thread at a time (a thread
-/// that finds the callback busy does not wait for it).
-class Progress
-{
-public:
-  Progress(const std::function<bool(double)>& callback, std::size_t total)
-    : m_callback(callback), m_total(total), m_done(0), m_busy(false), m_interrupted(false)
-  {}
-
-  bool interrupted() const { return m_interrupted.load(std::memory_order_relaxed); }
-
-  void add(std::size_t done)
-  {
-    const std::size_t now = m_done.fetch_add(done) + done;
-    if(!m_callback || m_busy.exchange(true))
-      return;
-    if(!m_callback(double(now) / double(m_total)))
-      m_interrupted = true;
-    m_busy = false;
-  }
-
-  void finish()
-  {
-    if(m_callback && !interrupted())
-      m_callback(1.);
-  }
-
-private:
-  const std::function<bool(double)>& m_callback;
-  std::size_t m_total;
-  std::atomic<std::size_t> m_done;
-  std::atomic<bool> m_busy;
-  std::atomic<bool> m_interrupted;
-};
-
-/// The iterator to the element at a position of the input range: kept in a
-/// table, unless the iterators are random access.
-template <typename Iterator,
-          bool random_access = std::is_convertible<typename std::iterator_traits<Iterator>::iterator_category,
-                                                   std::random_access_iterator_tag>::value>
-class Elements
-{
-public:
-  void add(Iterator it) { m_iterators.push_back(it); }
-  Iterator at(Iterator, std::size_t position) const { return m_iterators[position]; }
-
-private:
-  std::vector<Iterator> m_iterators;
-};
-
-template <typename Iterator>
-class Elements<Iterator, true>
-{
-public:
-  void add(Iterator) {}
-  Iterator at(Iterator begin, std::size_t position) const { return begin + position; }
-};
-
-/// Calls `process(begin, end, scratch)` on blocks of at most 64 consecutive
-/// positions of [0, `size`), with one `scratch = make_scratch()` per thread:
-/// over TBB's threads with `Parallel_tag`, in order otherwise. Reports each
-/// block to `progress` and stops starting blocks once it is interrupted.
-template <typename ConcurrencyTag, typename MakeScratch, typename Process>
-void for_each_block(std::size_t size, Progress& progress, MakeScratch make_scratch, Process process)
-{
-  const std::size_t block = 64;
-#ifdef CGAL_LINKED_WITH_TBB
-  if(std::is_convertible<ConcurrencyTag, Parallel_tag>::value)
-  {
-    typedef decltype(make_scratch()) Scratch_type;
-    tbb::enumerable_thread_specific<Scratch_type> scratches(make_scratch);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, size, block),
-                      [&](const tbb::blocked_range<std::size_t>& range) {
-                        if(progress.interrupted())
-                          return;
-                        process(range.begin(), range.end(), scratches.local());
-                        progress.add(range.size());
-                      });
-    return;
-  }
-#endif
-  auto scratch = make_scratch();
-  for(std::size_t begin = 0; begin < size && !progress.interrupted(); begin += block)
-  {
-    const std::size_t end = (std::min)(size, begin + block);
-    process(begin, end, scratch);
-    progress.add(end - begin);
-  }
-}
-
-inline void check(bool condition, const std::string& message)
-{
-  if(!condition)
-    throw std::invalid_argument("CGAL::rrht_estimate_normals(): " + message);
-}
-
-/// A count given as any arithmetic type, checked to lie in [low, high]
-/// before it is converted (so that -1 is not taken for a huge unsigned).
-/// The bounds are far below 2^53, so the comparison in double is exact.
-template <typename Count, typename T>
-Count count_in_range(const T& value, std::uint64_t low, std::uint64_t high, const std::string& what)
-{
-  static_assert(std::is_arithmetic<T>::value, "a count must be given as a number");
-  const double as_double = static_cast<double>(value);
-  check(as_double >= double(low) && as_double <= double(high), // false for NaN
-        what + " must be from " + std::to_string(low) + " to " + std::to_string(high));
-  return static_cast<Count>(value);
-}
-
-/// Whether normals can be written: a range needs a `normal_map` (checked at
-/// compile time, as \cgal does); a `CGAL::Point_set_3` may use its own normal
-/// map, if it has one (checked at run time, the same on every \cgal version).
-template <typename PointRange, typename NamedParameters>
-bool has_normal_map(const PointRange&, const NamedParameters&)
-{
-  static_assert(!CGAL::parameters::is_default_parameter<NamedParameters, CGAL::internal_np::normal_t>::value,
-                "CGAL::rrht_estimate_normals(): no normal map");
-  return true;
-}
-
-template <typename Point, typename Vector, typename NamedParameters>
-bool has_normal_map(const Point_set_3<Point, Vector>& points, const NamedParameters&)
-{
-  return !CGAL::parameters::is_default_parameter<NamedParameters, CGAL::internal_np::normal_t>::value ||
-         points.has_normal_map();
-}
-
-} // namespace internal
-/// \endcond
-} // namespace RRHT
 
 /**
    \ingroup PkgRRHTRef
@@ -449,7 +146,7 @@ bool has_normal_map(const Point_set_3<Point, Vector>& points, const NamedParamet
      \cgalParamNBegin{accumulator_slices}
        \cgalParamDescription{n_phi, the number of slices of the sphere in the accumulator (paper, Section 3)}
        \cgalParamType{an integer from 1 to 1000}
-       \cgalParamDefault{`15` (172 bins on the half sphere, see `CGAL::RRHT::Bin_layout`)}
+       \cgalParamDefault{`15` (M = 172 bins on the half sphere)}
      \cgalParamNEnd
 
      \cgalParamNBegin{number_of_rotations}
@@ -534,7 +231,7 @@ void rrht_estimate_normals(PointRange& points,
   check(k > 0 || neighbor_radius > 0, "k must be at least 1 when no neighbor_radius is given");
   const unsigned int accumulator_slices = RRHT::internal::count_in_range<unsigned int>(
     choose_parameter(get_parameter(np, rrht_np::accumulator_slices), 15u), 1, 1000, "accumulator_slices (n_phi)");
-  const RRHT::Bin_layout layout(accumulator_slices);
+  const RRHT::internal::Bin_layout layout(accumulator_slices);
 
   RRHT::internal::Settings settings;
   settings.k = k;
@@ -555,30 +252,30 @@ void rrht_estimate_normals(PointRange& points,
         settings.aggregation == RRHT::Aggregation::CLUSTER, "unknown aggregation");
   const double cluster_angle = choose_parameter(get_parameter(np, rrht_np::cluster_angle), 45.);
   check(cluster_angle >= 0 && cluster_angle <= 180, "cluster_angle must be from 0 to 180 degrees");
-  settings.cos_cluster_angle = std::cos(cluster_angle * 3.14159265358979323846 / 180.);
+  settings.cos_cluster_angle = std::cos(cluster_angle * CGAL_PI / 180.);
   settings.seed = choose_parameter(get_parameter(np, internal_np::random_seed), 0u);
 
   // The finite points of the cloud in double precision, in one kd-tree along
   // a Hilbert curve. The others get the null vector.
   RRHT::internal::Elements<typename PointRange::iterator> elements;
-  std::vector<RRHT::Neighbor_search::Indexed_point> cloud;
+  std::vector<RRHT::internal::Neighbor_search::Indexed_point> cloud;
   std::size_t position = 0;
   for(auto it = points.begin(); it != points.end(); ++it, ++position)
   {
     const auto& p = get(point_map, *it);
-    const RRHT::Neighbor_search::Point q(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    const RRHT::internal::Neighbor_search::Point q(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
     elements.add(it);
-    if(RRHT::has_finite_coordinates(q))
+    if(RRHT::internal::has_finite_coordinates(q))
       cloud.emplace_back(q, position);
     else
       put(normal_map, *it, CGAL::NULL_VECTOR);
   }
   if(cloud.empty())
     return;
-  const RRHT::Neighbor_search search(std::move(cloud), ConcurrencyTag());
+  const RRHT::internal::Neighbor_search search(std::move(cloud), ConcurrencyTag());
   const std::size_t size = search.size();
   settings.k = static_cast<unsigned int>((std::min<std::size_t>)(k, size - 1));
-  const RRHT::Cube_weights cube_weights(settings.sampling == RRHT::Sampling::CUBES ? settings.presampling_factor : 1);
+  const RRHT::internal::Cube_weights cube_weights(settings.sampling == RRHT::Sampling::CUBES ? settings.presampling_factor : 1);
 
   // Points are processed along the Hilbert curve, each with the random
   // stream of its position in the input.

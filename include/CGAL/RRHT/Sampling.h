@@ -7,8 +7,7 @@
 #ifndef CGAL_RRHT_SAMPLING_H
 #define CGAL_RRHT_SAMPLING_H
 
-#include <CGAL/RRHT/Points_sampling.h>
-#include <CGAL/RRHT/Ball_sampling.h>
+
 
 namespace CGAL {
 namespace RRHT {
@@ -17,9 +16,9 @@ namespace RRHT {
 /// How the three points of a plane hypothesis are drawn in a neighborhood.
 enum class Sampling
 {
-  POINTS, ///< RRHT_Points: uniformly among the neighbors, never the same triple twice (`Points_sampler`).
-  CUBES,  ///< RRHT_Cubes: a small cube of the ball, weighted by its volume in the ball, then a point in it (`Cubes_sampler`).
-  UNIF    ///< RRHT_Unif: a small ball of radius r/c in the neighborhood ball, redrawn while empty, then a point in it (`Unif_sampler`).
+  POINTS, ///< RRHT_Points: uniformly among the neighbors, never the same triple twice.
+  CUBES,  ///< RRHT_Cubes: a small cube of the ball, weighted by its volume in the ball, then a point in it.
+  UNIF    ///< RRHT_Unif: a small ball of radius r/c in the neighborhood ball, redrawn while empty, then a point in it.
 };
 
 } // namespace RRHT

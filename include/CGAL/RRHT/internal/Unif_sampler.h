@@ -1,163 +1,26 @@
 // Copyright (c) 2026 The CGAL RRHT authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// RRHT_Cubes and RRHT_Unif (paper, Section 5): points drawn spatially
-// uniformly in the neighborhood ball B_P rather than uniformly among the
-// points, so that a densely sampled patch does not outvote a sparse one.
+// RRHT_Unif (paper, Section 5): points drawn spatially uniformly in the
+// neighborhood ball B_P through small balls of radius r/c centered in it.
 
-#ifndef CGAL_RRHT_BALL_SAMPLING_H
-#define CGAL_RRHT_BALL_SAMPLING_H
+#ifndef CGAL_RRHT_INTERNAL_UNIF_SAMPLER_H
+#define CGAL_RRHT_INTERNAL_UNIF_SAMPLER_H
 
-#include <CGAL/RRHT/Instruction_set.h>
-#include <CGAL/RRHT/Random.h>
-#include <CGAL/RRHT/Weighted_sampling.h>
+#include <CGAL/RRHT/internal/Instruction_set.h>
+#include <CGAL/RRHT/internal/Random.h>
+#include <CGAL/RRHT/internal/Triple.h>
+#include <CGAL/RRHT/internal/Weighted_points_sampler.h>
 
 #include <Eigen/Core>
 
 #include <algorithm>
-#include <array>
-#include <cmath>
 #include <cstdint>
-#include <initializer_list>
 #include <vector>
 
 namespace CGAL {
 namespace RRHT {
-
 namespace internal {
-/// Squared distance from the origin (the center of B_P) to the cube
-/// [low[0], low[0] + side] x [low[1], ...] x [low[2], ...]; 0 inside.
-inline double squared_distance_to_cube(const double low[3], double side)
-{
-  double squared_distance = 0;
-  for(int d = 0; d < 3; ++d)
-  {
-    const double gap = (std::max)({ low[d], -(low[d] + side), 0. });
-    squared_distance += gap * gap;
-  }
-  return squared_distance;
-}
-} // namespace internal
-
-/// Weights of the c^3 small cubes that cover the ball (paper, Fig. 5): the
-/// fraction of each cube's volume inside the ball. They depend on c only
-/// (the ball is scaled to the unit ball) and are computed once, by the
-/// midpoint rule on m^3 sub-cubes per cube (m = max(8, 128 / c), i.e. 32^3
-/// for c = 4). A cube that meets the ball always keeps a positive weight, so
-/// that every point of the neighborhood can be drawn.
-class Cube_weights
-{
-public:
-  explicit Cube_weights(unsigned int c) : m_c(c), m_weights(std::size_t(c) * c * c, 0.)
-  {
-    const unsigned int m = (std::max)(8u, 128u / c);
-    const double side = 2. / c, sub = side / m;
-    for(unsigned int i = 0; i < c; ++i)
-      for(unsigned int j = 0; j < c; ++j)
-        for(unsigned int k = 0; k < c; ++k)
-        {
-          const double lo[3] = { -1 + i * side, -1 + j * side, -1 + k * side };
-          if(internal::squared_distance_to_cube(lo, side) >= 1)
-            continue;
-          std::size_t inside = 0;
-          for(unsigned int a = 0; a < m; ++a)
-            for(unsigned int b = 0; b < m; ++b)
-              for(unsigned int e = 0; e < m; ++e)
-              {
-                const double x = lo[0] + (a + 0.5) * sub, y = lo[1] + (b + 0.5) * sub, z = lo[2] + (e + 0.5) * sub;
-                inside += (x * x + y * y + z * z <= 1);
-              }
-          m_weights[(std::size_t(i) * c + j) * c + k] = (std::max)(double(inside), 0.5) / (double(m) * m * m);
-        }
-  }
-
-  unsigned int cubes_per_axis() const { return m_c; }
-  double weight(std::uint64_t cube) const { return m_weights[cube]; }
-
-private:
-  unsigned int m_c;
-  std::vector<double> m_weights;
-};
-
-/// RRHT_Cubes: pick one of the c^3 small cubes covering the ball with a
-/// probability proportional to its weight, among those holding points (the
-/// same as picking among all and picking again an empty one), then a point
-/// of that cube uniformly.
-///
-/// That is a fixed distribution over the neighbors: a point of cube C is
-/// drawn with probability w(C) / (W |C|), W being the total weight of the
-/// cubes that hold points and |C| the number of points of C. The points are
-/// drawn with these probabilities by `Weighted_points_sampler` (Walker's
-/// alias method over the points). With a binary search over the cumulated
-/// weights of the cubes, RRHT_Cubes took 2.4 times as long as RRHT_Points;
-/// with an alias table over the cubes and then a uniform point of the cube
-/// (two dependent reads and two draws per point), 1.2 to 1.4 times; over
-/// the points, the single-thread run at the fast setting on the 100k-point
-/// noisy cube takes 2.13 s instead of 2.35 s (RRHT_Points: 1.85 s). The
-/// cube of each point is found without sorting the points by cube.
-class Cubes_sampler
-{
-public:
-  /// Draws with the loops of `instruction_set` (the triples are the same
-  /// with each, see `Instruction_set.h`).
-  explicit Cubes_sampler(const Cube_weights& weights, Instruction_set instruction_set = best_instruction_set())
-    : m_weights(&weights), m_points(instruction_set)
-  {}
-
-  void prepare(const std::vector<Eigen::Vector3d>& points, double radius)
-  {
-    const std::uint32_t n = std::uint32_t(points.size());
-    const unsigned int c = m_weights->cubes_per_axis();
-    if(m_points_in_cube.empty())
-      m_points_in_cube.assign(std::size_t(c) * c * c, 0);
-
-    // The cube of each point, and the number of points of each cube.
-    m_cube_of_point.resize(n);
-    const double to_cubes = c / (2 * radius), last = c - 1;
-    for(std::uint32_t i = 0; i < n; ++i)
-    {
-      std::uint32_t cube = 0;
-      for(int d = 0; d < 3; ++d)
-      {
-        // Clamped, then truncated: the floor, without a call to
-        // `std::floor()`, which has no SSE2 instruction.
-        const double x = (points[i][d] + radius) * to_cubes;
-        cube = cube * c + std::uint32_t((std::min)((std::max)(x, 0.), last));
-      }
-      m_cube_of_point[i] = cube;
-      ++m_points_in_cube[cube];
-    }
-
-    // The probability of each point, times n (a mean of 1): w(C) / (W |C|).
-    double total = 0;
-    for(std::size_t cube = 0; cube < m_points_in_cube.size(); ++cube)
-      total += m_points_in_cube[cube] != 0 ? m_weights->weight(cube) : 0.;
-    m_scaled.resize(n);
-    for(std::uint32_t i = 0; i < n; ++i)
-    {
-      const std::uint32_t cube = m_cube_of_point[i];
-      m_scaled[i] = m_weights->weight(cube) / (total * m_points_in_cube[cube]) * n;
-    }
-    for(std::uint32_t cube : m_cube_of_point)
-      m_points_in_cube[cube] = 0;
-    m_points.prepare(m_scaled);
-  }
-
-  void start_run() {}
-
-  /// Writes `count` triples of distinct points to `out`; returns `count`.
-  std::size_t draw(Random& rng, std::size_t count, Triple* out) { return m_points.draw(rng, count, out); }
-
-  /// One point (for `draw_distinct_triple()`): the draw of `draw()`.
-  std::uint32_t draw_point(Random& rng) { return m_points.draw_point(rng); }
-
-private:
-  const Cube_weights* m_weights;
-  std::vector<std::uint32_t> m_cube_of_point;
-  std::vector<std::uint32_t> m_points_in_cube; // per cube: 0 between neighborhoods
-  std::vector<double> m_scaled;                // probabilities times n
-  Weighted_points_sampler m_points;
-};
 
 /// RRHT_Unif: pick a small ball B of radius s = r/c centered uniformly in the
 /// neighborhood ball B_P, redraw it while it holds no point, then pick a
@@ -171,10 +34,7 @@ private:
 ///
 /// m(x) being the number of neighbors within s of x. Drawing the centers one
 /// by one costs a search of the small ball around each, for 1.7 centers per
-/// point drawn: with a grid of cells of side s, candidate lists in blocks of
-/// 8 points and vectorized draws of the centers, RRHT_Unif still took 6.4
-/// to 8 times as long as RRHT_Points at the fast setting (and 6 times with
-/// no center wasted). So the integral is computed once per neighborhood, by
+/// point drawn. So the integral is computed once per neighborhood, by
 /// the midpoint rule over a lattice of step h = s / L (L =
 /// `lattice_steps_per_small_radius`) shifted at random, and the points are
 /// then drawn with these probabilities as those of RRHT_Cubes are
@@ -186,13 +46,9 @@ private:
 /// That is the paper's procedure with the centers drawn among the nodes
 /// instead of anywhere in B_P; dividing by the number of nodes of B(q, s),
 /// which varies with q's place among them, corrects the volume of the small
-/// ball. The total variation distance between these probabilities and the
-/// integral, on 10 neighborhoods of the 100k-point noisy cube (k = 100, c =
-/// 4, the integral by the same rule with L = 12 and 3 shifts), is 1.6 to 2%
-/// with L = 3 (0.9 to 1.1% with L = 4, 3 to 3.8% with L = 2); RRHT_Points is
-/// 8 to 16% away from it. On the 100k-point noisy cube at the fast setting
-/// with one thread, RRHT_Unif took 3.9 s with L = 3 and 5.4 s with L = 4,
-/// against 11.5 s for the centers one by one and 1.53 s for RRHT_Points.
+/// ball. L = 3 keeps the total variation distance to the integral near 2%
+/// (tested against the paper's procedure; the choice of L is measured in
+/// `benchmark/results/targets/README.md`).
 ///
 /// In units of h, B_P has radius R = c L around the origin, and the nodes
 /// are the points t + δ, t an integer vector in [-R, R]^3 and δ the random
@@ -482,7 +338,8 @@ private:
   Weighted_points_sampler m_points;
 };
 
+} // namespace internal
 } // namespace RRHT
 } // namespace CGAL
 
-#endif // CGAL_RRHT_BALL_SAMPLING_H
+#endif // CGAL_RRHT_INTERNAL_UNIF_SAMPLER_H

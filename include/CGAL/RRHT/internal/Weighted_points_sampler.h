@@ -5,12 +5,13 @@
 // method): the draws of RRHT_Cubes and RRHT_Unif (paper, Section 5), whose
 // spatially uniform procedures give each neighbor a fixed probability.
 
-#ifndef CGAL_RRHT_WEIGHTED_SAMPLING_H
-#define CGAL_RRHT_WEIGHTED_SAMPLING_H
+#ifndef CGAL_RRHT_INTERNAL_WEIGHTED_POINTS_SAMPLER_H
+#define CGAL_RRHT_INTERNAL_WEIGHTED_POINTS_SAMPLER_H
 
-#include <CGAL/RRHT/Instruction_set.h>
-#include <CGAL/RRHT/Points_sampling.h>
-#include <CGAL/RRHT/Random.h>
+#include <CGAL/RRHT/internal/Instruction_set.h>
+#include <CGAL/RRHT/internal/Random.h>
+#include <CGAL/RRHT/internal/Triple.h>
+#include <CGAL/RRHT/internal/draw_distinct_triple.h>
 
 #include <algorithm>
 #include <array>
@@ -19,71 +20,7 @@
 
 namespace CGAL {
 namespace RRHT {
-
 namespace internal {
-/// After this many draws of one point of a triple that repeat a point
-/// already in it, `other_point()` gives that point.
-constexpr int max_repeated_draws = 64;
-
-/// A point of [0, n) other than `a` and `b`, drawn uniformly: the point of a
-/// triple after `max_repeated_draws` repeats (a neighborhood whose spatial
-/// distribution hides all but one or two of its points).
-inline std::uint32_t other_point(std::uint32_t n, Random& rng, std::uint32_t a, std::uint32_t b)
-{
-  for(;;)
-  {
-    const std::uint32_t p = rng.uniform_index(n);
-    if(p != a && p != b)
-      return p;
-  }
-}
-
-/// The triple of `draw_distinct_triple()` made from draws given one at a
-/// time to `add()`.
-class Distinct_triple
-{
-public:
-  /// Adds the draw `p` (or, after `max_repeated_draws` draws that repeat a
-  /// point of the triple, a point of [0, n) drawn with `other_point()`);
-  /// true when the triple is complete: it is then `triple()`, and the next
-  /// draw starts another.
-  bool add(std::uint32_t p, std::uint32_t n, Random& rng)
-  {
-    if(m_size > 0 && (p == m_triple[0] || p == m_triple[m_size - 1]))
-    {
-      if(++m_repeats < max_repeated_draws)
-        return false;
-      p = other_point(n, rng, m_triple[0], m_triple[m_size - 1]);
-    }
-    m_repeats = 0;
-    m_triple[m_size++] = p;
-    if(m_size < 3)
-      return false;
-    m_size = 0;
-    return true;
-  }
-
-  const Triple& triple() const { return m_triple; }
-
-private:
-  Triple m_triple = {{ 0, 0, 0 }};
-  std::uint32_t m_size = 0; // points of the triple so far
-  int m_repeats = 0;        // draws that repeated one of them since the last
-};
-} // namespace internal
-
-/// Draws three distinct points of a neighborhood of `n` points with
-/// `sampler.draw_point(rng)`, drawing again a point equal to one already
-/// drawn; after `internal::max_repeated_draws` such draws of one point, that
-/// point is drawn uniformly among the others instead.
-template <typename Sampler>
-void draw_distinct_triple(Sampler& sampler, std::uint32_t n, Random& rng, Triple& t)
-{
-  internal::Distinct_triple triple;
-  while(!triple.add(sampler.draw_point(rng), n, rng))
-    ;
-  t = triple.triple();
-}
 
 /// Draws the points of a neighborhood of n points, point i with a given
 /// probability p_i, and triples of distinct points from these draws
@@ -98,16 +35,8 @@ void draw_distinct_triple(Sampler& sampler, std::uint32_t n, Random& rng, Triple
 /// with loops without branches, which the compiler vectorizes (and compiles
 /// for AVX2, see `Instruction_set.h`), and goes on drawing only for the few
 /// triples whose three draws are not distinct (see `draw_triples()`).
-/// Measured with RRHT_Cubes on the 100k-point noisy cube, fast setting, one
-/// thread (`rrht_normals --planes 300 --rotations 2 --threads 1 --sampling
-/// cubes`, the min of 9 interleaved runs): 1.96 s instead of 2.09 s with a
-/// call of `draw_point()` per draw (1.61e9 instead of 1.84e9 instructions
-/// on 10k points, callgrind); RRHT_Points takes 1.53 s.
-///
 /// `prepare()` makes the alias table without branches on the
-/// probabilities, which are mispredicted at random: 1.87 s instead of
-/// 1.96 s in the same runs (11% of the samples of `perf` were in it
-/// before).
+/// probabilities, which would be mispredicted at random.
 class Weighted_points_sampler
 {
 public:
@@ -251,7 +180,7 @@ private:
   Triple complete_triple(Random& rng, const std::array<std::int32_t, 3>& points,
                          const std::array<std::int32_t, 3>& accepted)
   {
-    internal::Distinct_triple triple;
+    Distinct_triple triple;
     for(int d = 0; d < 3; ++d)
       if(accepted[d] != 0 && triple.add(std::uint32_t(points[d]), m_n, rng))
         return triple.triple();
@@ -277,7 +206,8 @@ private:
   std::vector<std::uint32_t> m_small, m_large; // Vose's work lists
 };
 
+} // namespace internal
 } // namespace RRHT
 } // namespace CGAL
 
-#endif // CGAL_RRHT_WEIGHTED_SAMPLING_H
+#endif // CGAL_RRHT_INTERNAL_WEIGHTED_POINTS_SAMPLER_H

@@ -4,13 +4,13 @@
 // The instruction set of the loops that run for every plane hypothesis: the
 // draw of triples (`Points_sampler`, and `Weighted_points_sampler` for
 // RRHT_Cubes and RRHT_Unif) and the planes of a batch (`Plane_batch`); of
-// the rotation of a neighborhood for each accumulator (`internal::rotate()`);
+// the rotation of a neighborhood for each accumulator (`rotate()`);
 // and of the lattice of RRHT_Unif, for each neighborhood (`Unif_sampler`).
 // They also get an AVX2 version, chosen at run time, that gives the same
 // results as the baseline one, bit for bit.
 
-#ifndef CGAL_RRHT_INSTRUCTION_SET_H
-#define CGAL_RRHT_INSTRUCTION_SET_H
+#ifndef CGAL_RRHT_INTERNAL_INSTRUCTION_SET_H
+#define CGAL_RRHT_INTERNAL_INSTRUCTION_SET_H
 
 /// \def CGAL_RRHT_AVX2_KERNELS
 /// 1 when these loops are compiled twice, for the target of the build and
@@ -24,10 +24,7 @@
 /// same bits (tested). Eigen's own vectorization, fixed when it is
 /// compiled, is the same in both.
 ///
-/// Measured at the fast setting on the noisy cube, one thread, against a
-/// build with `CGAL_RRHT_NO_AVX2_KERNELS`: 1.57 s instead of 1.71 s on 100k
-/// points (the min of 5 interleaved runs), 1.50e9 instead of 1.68e9
-/// instructions on 10k points (callgrind), with the same normals.
+/// What it gains is measured in `benchmark/results/targets/README.md`.
 ///
 /// GCC on x86-64 (the `target` attribute and `__builtin_cpu_supports()`),
 /// unless the build already targets AVX2 or `CGAL_RRHT_NO_AVX2_KERNELS` is
@@ -41,9 +38,10 @@
 
 namespace CGAL {
 namespace RRHT {
+namespace internal {
 
 /// The instruction sets of the loops of `Points_sampler`, `Weighted_points_sampler`,
-/// `Unif_sampler`, `Plane_batch` and `internal::rotate()`.
+/// `Unif_sampler`, `Plane_batch` and `rotate()`.
 enum class Instruction_set
 {
   baseline, ///< the target of the build
@@ -65,7 +63,6 @@ inline Instruction_set best_instruction_set()
 #endif
 }
 
-namespace internal {
 #if CGAL_RRHT_AVX2_KERNELS
 // `loop()` compiled for AVX2: `flatten` inlines it, and all it calls, here.
 template <typename Loop>
@@ -74,23 +71,23 @@ __attribute__((target("avx2"), flatten)) void run_for_avx2(const Loop& loop)
   loop();
 }
 #endif
-} // namespace internal
 
 /// Runs `loop()`, a loop of `Points_sampler`, `Weighted_points_sampler`,
-/// `Unif_sampler`, `Plane_batch` or `internal::rotate()`, compiled for
+/// `Unif_sampler`, `Plane_batch` or `rotate()`, compiled for
 /// `instruction_set`.
 template <typename Loop>
 void run_with(Instruction_set instruction_set, const Loop& loop)
 {
 #if CGAL_RRHT_AVX2_KERNELS
   if(instruction_set == Instruction_set::avx2)
-    return internal::run_for_avx2(loop);
+    return run_for_avx2(loop);
 #endif
   (void)instruction_set;
   loop();
 }
 
+} // namespace internal
 } // namespace RRHT
 } // namespace CGAL
 
-#endif // CGAL_RRHT_INSTRUCTION_SET_H
+#endif // CGAL_RRHT_INTERNAL_INSTRUCTION_SET_H

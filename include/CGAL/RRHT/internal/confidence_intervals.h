@@ -1,31 +1,17 @@
 // Copyright (c) 2026 The CGAL RRHT authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// When to stop drawing planes (paper, Section 3).
+// When to stop drawing planes before T_R: the confidence intervals of the
+// two most voted bins (paper, Section 3, eq. 9 and 10).
 
-#ifndef CGAL_RRHT_STOPPING_RULES_H
-#define CGAL_RRHT_STOPPING_RULES_H
+#ifndef CGAL_RRHT_INTERNAL_CONFIDENCE_INTERVALS_H
+#define CGAL_RRHT_INTERNAL_CONFIDENCE_INTERVALS_H
 
-#include <cmath>
 #include <cstddef>
-#include <stdexcept>
 
 namespace CGAL {
 namespace RRHT {
-
-/// Global upper bound T_R on the number of planes to draw (eq. 7): the least
-/// T such that, with probability at least `alpha`, the empirical vote share
-/// of every one of the `number_of_bins` bins is within `delta` of its
-/// probability (Hoeffding's inequality and a union bound over the bins):
-///   T_R = ceil( ln(2 M / (1 - alpha)) / (2 delta^2) ).
-/// With alpha = 0.95, delta = 0.08 and M = 171 it gives 690; the paper rounds
-/// it to 700 (Section 6).
-inline std::size_t hoeffding_number_of_planes(std::size_t number_of_bins, double alpha = 0.95, double delta = 0.08)
-{
-  if(number_of_bins == 0 || !(alpha > 0 && alpha < 1) || !(delta > 0 && delta < 1))
-    throw std::invalid_argument("CGAL::RRHT::hoeffding_number_of_planes(): needs M > 0, 0 < alpha < 1 and 0 < delta < 1");
-  return static_cast<std::size_t>(std::ceil(std::log(2. * number_of_bins / (1. - alpha)) / (2. * delta * delta)));
-}
+namespace internal {
 
 /// Confidence interval test (eq. 10): after `number_of_planes` planes, of
 /// which `votes_first` went to the most voted bin and `votes_second` to the
@@ -49,7 +35,8 @@ inline bool confidence_intervals_can_be_disjoint(std::size_t votes_first, std::s
   return votes_first * votes_first >= 4 * number_of_planes;
 }
 
+} // namespace internal
 } // namespace RRHT
 } // namespace CGAL
 
-#endif // CGAL_RRHT_STOPPING_RULES_H
+#endif // CGAL_RRHT_INTERNAL_CONFIDENCE_INTERVALS_H

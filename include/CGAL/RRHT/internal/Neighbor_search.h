@@ -4,8 +4,8 @@
 // Neighborhoods N_P of the points (paper, Sections 5 and 6): the k nearest
 // neighbors, or the points in a ball of radius r, from one CGAL::Kd_tree.
 
-#ifndef CGAL_RRHT_NEIGHBOR_SEARCH_H
-#define CGAL_RRHT_NEIGHBOR_SEARCH_H
+#ifndef CGAL_RRHT_INTERNAL_NEIGHBOR_SEARCH_H
+#define CGAL_RRHT_INTERNAL_NEIGHBOR_SEARCH_H
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Search_traits_3.h>
@@ -31,6 +31,7 @@
 
 namespace CGAL {
 namespace RRHT {
+namespace internal {
 
 /// The neighborhood of one point, in coordinates relative to that point.
 struct Neighborhood
@@ -71,9 +72,8 @@ bool has_finite_coordinates(const Point& p)
 /// The points, all with finite coordinates, are stored in the order of a Hilbert curve
 /// (`CGAL::hilbert_sort()`), and queries are made by position in that order:
 /// points close in space are close in memory, so consecutive queries walk
-/// the same branches of the tree and read the same cache lines. The queries
-/// of a randomly ordered 1M-point sphere took 5.8 s instead of 10.6 s
-/// (benchmark/results/targets).
+/// the same branches of the tree and read the same cache lines (measured in
+/// `benchmark/results/targets/README.md`).
 class Neighbor_search
 {
 public:
@@ -124,8 +124,7 @@ public:
     m_tree.reset(new Tree(boost::counting_iterator<std::size_t>(0),
                           boost::counting_iterator<std::size_t>(m_points.size()), Splitter(), m_traits));
     // In parallel when TBB is there (Kd_tree's own parallel build): the
-    // same tree (the bare queries on the 100k cube with 2 threads: 0.43 s
-    // instead of 0.46 s).
+    // same tree.
 #ifdef CGAL_TBB_STRUCTURE_IN_KD_TREE
     m_tree->build<ConcurrencyTag>();
 #else
@@ -196,8 +195,8 @@ public:
       k = (k == 0) ? 3 : k; // fewer than 3 points in the ball: k nearest neighbors
     }
 
-    // Unsorted: the order of the search's queue. The single-thread run at
-    // the fast setting on the 100k cube takes 2.25 s instead of 2.50 s.
+    // Unsorted: the order of the search's queue, deterministic for a given
+    // cloud (sorting would only cost time).
     K_neighbor_search search(*m_tree, q, k + 1, 0, true, m_distance, false);
     double farthest = 0;
     for(const auto& neighbor : search)
@@ -232,7 +231,8 @@ private:
   Distance m_distance;
 };
 
+} // namespace internal
 } // namespace RRHT
 } // namespace CGAL
 
-#endif // CGAL_RRHT_NEIGHBOR_SEARCH_H
+#endif // CGAL_RRHT_INTERNAL_NEIGHBOR_SEARCH_H

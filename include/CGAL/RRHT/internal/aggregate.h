@@ -4,8 +4,10 @@
 // Combining the normals found with the n_rot randomly rotated accumulators
 // into one normal (paper, Section 4).
 
-#ifndef CGAL_RRHT_AGGREGATION_H
-#define CGAL_RRHT_AGGREGATION_H
+#ifndef CGAL_RRHT_INTERNAL_AGGREGATE_H
+#define CGAL_RRHT_INTERNAL_AGGREGATE_H
+
+#include <CGAL/RRHT/Aggregation.h>
 
 #include <Eigen/Core>
 
@@ -15,15 +17,7 @@
 
 namespace CGAL {
 namespace RRHT {
-
-/// \ingroup PkgRRHTRef
-/// How the normals of the rotated accumulators are combined.
-enum class Aggregation
-{
-  MEAN,   ///< RRHT_m: mean of the normals weighted by their votes.
-  BEST,   ///< RRHT_b: the most voted normal.
-  CLUSTER ///< RRHT_c: vote-weighted mean of the most voted cluster of normals within `cluster_angle`.
-};
+namespace internal {
 
 /// The outcome of one run of the Hough transform: the normal of its most
 /// voted bin and the votes of that bin.
@@ -33,8 +27,6 @@ struct Candidate_normal
   std::size_t votes;
 };
 
-/// \cond SKIP_IN_MANUAL
-namespace internal {
 // Vote-weighted mean of the candidates `members` says to take, each turned to
 // agree with `reference` since normals are unoriented.
 template <typename Members>
@@ -51,9 +43,6 @@ Eigen::Vector3d weighted_mean(const std::vector<Candidate_normal>& candidates,
   const double norm = sum.norm();
   return norm > 0 ? Eigen::Vector3d(sum / norm) : reference;
 }
-} // namespace internal
-/// \endcond
-
 /// Combines the candidates (runs that drew no plane have 0 votes and are
 /// ignored) into a unit normal, or the zero vector if no run voted.
 /// `cos_cluster_angle` is the cosine of a_cluster, used by `CLUSTER` only:
@@ -76,7 +65,7 @@ inline Eigen::Vector3d aggregate(const std::vector<Candidate_normal>& candidates
   case Aggregation::BEST:
     return best_normal;
   case Aggregation::MEAN:
-    return internal::weighted_mean(candidates, best_normal, [&](std::size_t i) { return candidates[i].votes > 0; });
+    return weighted_mean(candidates, best_normal, [&](std::size_t i) { return candidates[i].votes > 0; });
   case Aggregation::CLUSTER:
   default:
     {
@@ -98,13 +87,14 @@ inline Eigen::Vector3d aggregate(const std::vector<Candidate_normal>& candidates
           center_votes = votes;
         }
       }
-      return internal::weighted_mean(candidates, candidates[center].normal,
+      return weighted_mean(candidates, candidates[center].normal,
                                      [&](std::size_t j) { return close(center, j); });
     }
   }
 }
 
+} // namespace internal
 } // namespace RRHT
 } // namespace CGAL
 
-#endif // CGAL_RRHT_AGGREGATION_H
+#endif // CGAL_RRHT_INTERNAL_AGGREGATE_H

@@ -4,22 +4,20 @@
 // RRHT_Points (paper, Section 5): triples drawn uniformly among the
 // neighbors, never the same triple twice within one run.
 
-#ifndef CGAL_RRHT_POINTS_SAMPLING_H
-#define CGAL_RRHT_POINTS_SAMPLING_H
+#ifndef CGAL_RRHT_INTERNAL_POINTS_SAMPLER_H
+#define CGAL_RRHT_INTERNAL_POINTS_SAMPLER_H
 
-#include <CGAL/RRHT/Instruction_set.h>
-#include <CGAL/RRHT/Random.h>
+#include <CGAL/RRHT/internal/Instruction_set.h>
+#include <CGAL/RRHT/internal/Random.h>
+#include <CGAL/RRHT/internal/Triple.h>
 
 #include <algorithm>
-#include <array>
 #include <cstdint>
 #include <vector>
 
 namespace CGAL {
 namespace RRHT {
-
-/// Three distinct indices into a neighborhood.
-typedef std::array<std::uint32_t, 3> Triple;
+namespace internal {
 
 /// Draws distinct triples of a neighborhood of `n` points, uniformly and
 /// without repetition until `start_run()` is called again.
@@ -33,19 +31,8 @@ typedef std::array<std::uint32_t, 3> Triple;
 ///   array of 32 bits per triple the run may draw (a blocked Bloom filter:
 ///   two bits in one 32-bit word per triple) answers "never drawn" for all
 ///   but a few in a thousand of the new triples; only those are looked up in
-///   the list. This costs less than a hash set: one word, a store to the end
-///   of a list, and a branch that is almost never taken (12.2 ns against
-///   12.9 ns per triple with an open-addressing hash set, in a
-///   micro-benchmark of 300 draws among 101 points, with one bit per
-///   triple). With one bit per triple, 1% of the new triples went to the
-///   list, whose scans were 3.4% of the instructions of a run at the
-///   precise setting (callgrind, 10k points of the noisy cube); with two
-///   bits in a 64-bit word, 0.7%, and a vote of `hough_transform()` costs
-///   16.1 ns instead of 16.8 ns at 691 planes (micro-benchmark, noisy
-///   101-point patch); with two bits in a 32-bit word, whose word and bits
-///   the vectorized loop computes, 0.2% (1.1% of the instructions), and a
-///   run at the precise setting takes 4.15e9 instructions instead of 4.41e9,
-///   with the rotation of `rotate()` (callgrind, same cloud, same triples).
+///   the list: one word read and a store per triple, cheaper than a hash set
+///   (measured in `benchmark/results/targets/README.md`).
 ///
 /// Triples are drawn in batches (`draw()`), with no call per triple through
 /// the sampling mode. When n <= 2^12 (`small_limit`), a triple costs one
@@ -177,10 +164,7 @@ private:
   // a in [0, n), b in [0, n-1), c in [0, n-2) (rejected with probability
   // below 3 n / 2^16), made distinct and sorted by `distinct_and_sorted()`,
   // with a 32-bit hash for the filter. All in 32-bit integers (products
-  // below 2^28), without branches: the loops are vectorized, and the whole
-  // draw costs 6.3-6.9 ns per triple instead of 11.7 ns with three 21-bit
-  // numbers in 64-bit arithmetic (micro-benchmark of 300 draws among 101
-  // points).
+  // below 2^28), without branches, so that the loops are vectorized.
   void draw_candidates(Random& rng, std::size_t begin, std::size_t end)
   {
     run_with(m_instruction_set, [&] { compute_candidates(rng, begin, end); });
@@ -262,10 +246,9 @@ private:
 
     // A 32-bit hash of a triple picks a word of the filter (its high bits)
     // and two bits of it (its 10 low bits): a blocked Bloom filter, which
-    // sends to the list about a fifth as many new triples as one bit per
-    // triple did, for the same memory and one read (0.2% of them at the fast
-    // setting on the noisy cube). With 32-bit words, the word and the bits
-    // are computed in the vectorized loop for AVX2 (`vpsllvd`).
+    // sends fewer new triples to the list than one bit per triple, for the
+    // same memory and one read. With 32-bit words, the word and the bits are
+    // computed in the vectorized loop for AVX2 (`vpsllvd`).
     static std::uint32_t word_of(std::uint32_t hash, unsigned int shift) { return hash >> shift; }
     static std::uint32_t bits_of(std::uint32_t hash) { return (1u << (hash & 31u)) | (1u << ((hash >> 5) & 31u)); }
 
@@ -321,7 +304,8 @@ private:
   std::int32_t m_rejection_threshold[3] = { 0, 0, 0 };
 };
 
+} // namespace internal
 } // namespace RRHT
 } // namespace CGAL
 
-#endif // CGAL_RRHT_POINTS_SAMPLING_H
+#endif // CGAL_RRHT_INTERNAL_POINTS_SAMPLER_H

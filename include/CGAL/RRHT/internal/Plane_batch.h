@@ -5,12 +5,12 @@
 // triple of points defines a plane"), their unit normals and their bins in
 // the accumulator (Section 3), computed together.
 
-#ifndef CGAL_RRHT_PLANE_BATCH_H
-#define CGAL_RRHT_PLANE_BATCH_H
+#ifndef CGAL_RRHT_INTERNAL_PLANE_BATCH_H
+#define CGAL_RRHT_INTERNAL_PLANE_BATCH_H
 
-#include <CGAL/RRHT/Accumulator.h>
-#include <CGAL/RRHT/Instruction_set.h>
-#include <CGAL/RRHT/Points_sampling.h>
+#include <CGAL/RRHT/internal/Bin_layout.h>
+#include <CGAL/RRHT/internal/Instruction_set.h>
+#include <CGAL/RRHT/internal/Triple.h>
 
 #include <Eigen/Core>
 
@@ -20,6 +20,7 @@
 
 namespace CGAL {
 namespace RRHT {
+namespace internal {
 
 /// The planes through a batch of at most `capacity` triples of points.
 ///
@@ -36,14 +37,6 @@ namespace RRHT {
 ///      (`Bin_layout::representative()`), in a loop without branches that
 ///      the compiler vectorizes;
 ///   4. the bin, from the tables of `Bin_layout` (scalar).
-/// Step 2 was first written as one Eigen expression per array (ten passes
-/// over the batch); as one loop, and the unit normal in step 3, a vote of
-/// `hough_transform()` costs 17.1 ns instead of 17.9 ns on a noisy 101-point
-/// patch (micro-benchmark), with the same results.
-/// The single-thread run at the fast setting on the 100k-point noisy cube
-/// took 3.1 s instead of 3.7-3.9 s with a double-precision loop per plane
-/// (the tables of `Bin_layout` unchanged); in a micro-benchmark of a
-/// 101-point patch these four steps now cost 6.8 ns per plane.
 /// The loops also have an AVX2 version, taken when the processor has it
 /// (`Instruction_set.h`), with the same results.
 ///
@@ -144,7 +137,8 @@ private:
   std::uint32_t m_bin[capacity];
 };
 
+} // namespace internal
 } // namespace RRHT
 } // namespace CGAL
 
-#endif // CGAL_RRHT_PLANE_BATCH_H
+#endif // CGAL_RRHT_INTERNAL_PLANE_BATCH_H

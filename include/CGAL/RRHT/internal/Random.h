@@ -4,17 +4,20 @@
 // Reproducible randomness: one independent stream per point, so that the
 // normals do not depend on how points are spread over threads.
 
-#ifndef CGAL_RRHT_RANDOM_H
-#define CGAL_RRHT_RANDOM_H
+#ifndef CGAL_RRHT_INTERNAL_RANDOM_H
+#define CGAL_RRHT_INTERNAL_RANDOM_H
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+
+#include <CGAL/number_type_config.h>
 
 #include <cmath>
 #include <cstdint>
 
 namespace CGAL {
 namespace RRHT {
+namespace internal {
 
 /// A counter-based generator (SplitMix64, Steele, Lea and Flood 2014): the
 /// k-th number of a stream is a bijective mix of `key + k * gamma`. The key of
@@ -59,7 +62,7 @@ public:
   /// "Uniform random rotations", Graphics Gems III, 1992).
   Eigen::Matrix3d uniform_rotation()
   {
-    const double two_pi = 6.28318530717958647692;
+    const double two_pi = 2 * CGAL_PI;
     const double u1 = uniform_real(), u2 = uniform_real(), u3 = uniform_real();
     const double a = std::sqrt(1 - u1), b = std::sqrt(u1);
     const Eigen::Quaterniond q(a * std::sin(two_pi * u2), a * std::cos(two_pi * u2),
@@ -107,7 +110,8 @@ private:
   std::uint64_t m_state;
 };
 
+} // namespace internal
 } // namespace RRHT
 } // namespace CGAL
 
-#endif // CGAL_RRHT_RANDOM_H
+#endif // CGAL_RRHT_INTERNAL_RANDOM_H

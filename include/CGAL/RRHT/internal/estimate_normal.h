@@ -1,0 +1,91 @@
+// Copyright (c) 2026 The CGAL RRHT authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The normal at one point (paper, Section 2): n_rot runs of the Hough
+// transform on its neighborhood, in randomly rotated accumulators
+// (Section 4), with the sampling of Section 5.
+
+#ifndef CGAL_RRHT_INTERNAL_ESTIMATE_NORMAL_H
+#define CGAL_RRHT_INTERNAL_ESTIMATE_NORMAL_H
+
+#include <CGAL/RRHT/Sampling.h>
+#include <CGAL/RRHT/internal/Instruction_set.h>
+#include <CGAL/RRHT/internal/Neighbor_search.h>
+#include <CGAL/RRHT/internal/Random.h>
+#include <CGAL/RRHT/internal/Scratch.h>
+#include <CGAL/RRHT/internal/Settings.h>
+#include <CGAL/RRHT/internal/aggregate.h>
+#include <CGAL/RRHT/internal/hough_transform.h>
+#include <CGAL/RRHT/internal/rotate.h>
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <vector>
+
+namespace CGAL {
+namespace RRHT {
+namespace internal {
+
+/// The normal of a neighborhood from n_rot randomly rotated accumulators
+/// (Section 4): each run sees the points rotated, its normal is rotated back,
+/// and the normals are aggregated.
+template <typename Sampler>
+Eigen::Vector3d rotated_hough_transforms(const Neighborhood& neighborhood, Sampler& sampler, Random& rng,
+                                         const Settings& settings, Scratch& scratch)
+{
+  const std::vector<Eigen::Vector3d>& points = neighborhood.points;
+  scratch.candidates.clear();
+  scratch.rotated.resize(points.size());
+  for(unsigned int r = 0; r < settings.number_of_rotations; ++r)
+  {
+    // Rotated and scaled to the unit ball: normals do not depend on the
+    // scale, and single precision keeps its relative accuracy.
+    const Eigen::Matrix3d rotation = rng.uniform_rotation();
+    rotate(points, rotation / neighborhood.radius, scratch.rotated, best_instruction_set());
+    Candidate_normal candidate = hough_transform(scratch.rotated, sampler, rng, settings, scratch);
+    candidate.normal = rotation.transpose() * candidate.normal; // back to the frame of the cloud
+    scratch.candidates.push_back(candidate);
+  }
+  return aggregate(scratch.candidates, settings.aggregation, settings.cos_cluster_angle);
+}
+
+/// The normal at the point at `position` in the search's order, the
+/// `input_index`-th of the input (Section 2): draws plane hypotheses in its
+/// neighborhood with n_rot randomly rotated accumulators and combines their
+/// winners. Returns the zero vector when no plane can be formed.
+inline Eigen::Vector3d estimate_normal(std::size_t position, std::size_t input_index, const Neighbor_search& search,
+                                       const Settings& settings, Scratch& scratch)
+{
+  Neighborhood& neighborhood = scratch.neighborhood;
+  search.find(position, settings.k, settings.neighbor_radius, neighborhood, scratch.search);
+  const std::vector<Eigen::Vector3d>& points = neighborhood.points;
+  // Fewer than 3 distinct points, or a ball so small (a `neighbor_radius`
+  // below 1e-300) that the points cannot be scaled to the unit ball, nor to
+  // the grids of RRHT_Cubes and RRHT_Unif, without overflow.
+  if(points.size() < 3 || !(neighborhood.radius >= 1e-300))
+    return Eigen::Vector3d::Zero();
+
+  // One random stream per point: the same normals whatever the threads.
+  Random rng(settings.seed, input_index);
+
+  switch(settings.sampling)
+  {
+  case Sampling::CUBES:
+    scratch.cubes.prepare(points, neighborhood.radius);
+    return rotated_hough_transforms(neighborhood, scratch.cubes, rng, settings, scratch);
+  case Sampling::UNIF:
+    scratch.unif.prepare(points, neighborhood.radius, rng);
+    return rotated_hough_transforms(neighborhood, scratch.unif, rng, settings, scratch);
+  case Sampling::POINTS:
+  default:
+    scratch.points.prepare(std::uint32_t(points.size()), settings.number_of_planes);
+    return rotated_hough_transforms(neighborhood, scratch.points, rng, settings, scratch);
+  }
+}
+
+} // namespace internal
+} // namespace RRHT
+} // namespace CGAL
+
+#endif // CGAL_RRHT_INTERNAL_ESTIMATE_NORMAL_H
