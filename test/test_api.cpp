@@ -244,6 +244,46 @@ TEST_CASE("Every documented named-parameter form", "[api][parameters]")
   }
 }
 
+TEST_CASE("CGAL 6's combine() keeps an RRHT chain and its RRHT parameters", "[api][parameters]")
+{
+#if CGAL_VERSION_NR < CGAL_VERSION_NUMBER(6, 0, 0)
+  WARN("SKIPPED: CGAL " << CGAL_VERSION_STR << " has no Named_function_parameters::combine()");
+#else
+  typedef Point_with_normal<SC> PN;
+  const CGAL::First_of_pair_property_map<PN> point_map;
+  const CGAL::Second_of_pair_property_map<PN> normal_map;
+  const Pair_cloud<SC> input = to_pairs<SC>(noisy_cube(2000));
+  auto run = [&](const auto& np) {
+    Pair_cloud<SC> cloud = input;
+    CGAL::rrht_estimate_normals<CGAL::Sequential_tag>(cloud, 40, np);
+    return normals_of<SC>(cloud);
+  };
+  const auto fast = run(params::point_map(point_map).normal_map(normal_map).number_of_planes(300).number_of_rotations(2));
+  // An RRHT chain combined with CGAL and RRHT links, then continued with RRHT parameters.
+  const auto combined = params::number_of_planes(300)
+                          .combine(CGAL::parameters::point_map(point_map), params::normal_map(normal_map))
+                          .number_of_rotations(2);
+  CHECK(run(combined) == fast);
+  // A CGAL chain combined with RRHT links holds their values.
+  CHECK(run(CGAL::parameters::point_map(point_map)
+              .combine(params::normal_map(normal_map), params::number_of_planes(300), params::number_of_rotations(2))) == fast);
+#endif
+}
+
+TEST_CASE("A CGAL::Point_set_3 without a normal map: a clear exception, nothing written", "[api][bad-input]")
+{
+  CGAL::Point_set_3<SC::Point_3> point_set;
+  for(const rrht_test::Sample& s : noisy_cube(500))
+    point_set.insert(s.point);
+  CHECK_THROWS_WITH(CGAL::rrht_estimate_normals<CGAL::Sequential_tag>(point_set, 20),
+                    Catch::Contains("no normal map"));
+  CHECK(!point_set.has_normal_map());
+  // Once it has one, the same call works.
+  point_set.add_normal_map();
+  CGAL::rrht_estimate_normals<CGAL::Sequential_tag>(point_set, 20);
+  CHECK(point_set.normal(*point_set.begin()) != CGAL::NULL_VECTOR);
+}
+
 #ifdef CGAL_LINKED_WITH_TBB
 TEST_CASE("Same seed, same normals, bit for bit, whatever the concurrency and the number of threads", "[api][parallel]")
 {

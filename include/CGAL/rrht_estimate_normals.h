@@ -277,6 +277,9 @@ void rrht_estimate_normals(PointRange& points,
   settings.k = static_cast<unsigned int>((std::min<std::size_t>)(k, size - 1));
   const RRHT::internal::Cube_weights cube_weights(settings.sampling == RRHT::Sampling::CUBES ? settings.presampling_factor : 1);
 
+  // Section 2, point by point: the planes through random triples of its
+  // neighbors vote in n_rot randomly rotated accumulators, and the normals
+  // of their most voted bins are combined (`internal::estimate_normal()`).
   // Points are processed along the Hilbert curve, each with the random
   // stream of its position in the input.
   auto process = [&](std::size_t begin, std::size_t end, RRHT::internal::Scratch& scratch) {

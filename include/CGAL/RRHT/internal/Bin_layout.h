@@ -64,6 +64,7 @@ public:
 
     const double pi = CGAL_PI;
     const double h = pi / accumulator_slices;
+    m_slice_height = h;
     const double bin_area = 0.85 * h * h;
     m_straddling = (accumulator_slices % 2 == 1);
     const unsigned int kept = (accumulator_slices + 1) / 2;
@@ -85,22 +86,6 @@ public:
     }
     if(!m_straddling)
       m_slice_z_low.back() = 0.; // exactly the equator
-
-    // Centers of the bins.
-    m_center.resize(size());
-    for(std::size_t s = 0; s < m_bins_in_slice.size(); ++s)
-    {
-      const double phi = (s + 0.5) * h;
-      const bool straddles = m_straddling && (s + 1 == m_bins_in_slice.size());
-      const double period = straddles ? pi : 2 * pi;
-      for(unsigned int b = 0; b < m_bins_in_slice[s]; ++b)
-      {
-        const double theta = (b + 0.5) * period / m_bins_in_slice[s];
-        m_center[m_first_bin[s] + b] = Vector(std::cos(theta) * std::sin(phi),
-                                              std::sin(theta) * std::sin(phi),
-                                              std::cos(phi));
-      }
-    }
 
     // Slice lookup: cell c covers z in [c / Z, (c + 1) / Z), with Z the
     // smallest power of 2 for which no cell holds two slice boundaries.
@@ -172,9 +157,6 @@ public:
   /// Number of bins M.
   std::size_t size() const { return m_first_bin.back(); }
 
-  /// Number of slices of the half sphere.
-  std::size_t number_of_slices() const { return m_bins_in_slice.size(); }
-
   /// Area of bin `bin` on the unit sphere (the half sphere has area 2 pi).
   double area(std::size_t bin) const
   {
@@ -194,8 +176,17 @@ public:
     return lo / hi;
   }
 
-  /// A unit direction at the center of bin `bin`.
-  const Vector& center(std::size_t bin) const { return m_center[bin]; }
+  /// The unit direction at the center of bin `bin`, in polar angle and
+  /// azimuth (computed on demand: only tests need it).
+  Vector center(std::size_t bin) const
+  {
+    const std::size_t s = slice_of_bin(bin);
+    const double phi = (s + 0.5) * m_slice_height;
+    const bool straddles = m_straddling && (s + 1 == m_bins_in_slice.size());
+    const double period = straddles ? CGAL_PI : 2 * CGAL_PI;
+    const double theta = (bin - m_first_bin[s] + 0.5) * period / m_bins_in_slice[s];
+    return Vector(std::cos(theta) * std::sin(phi), std::sin(theta) * std::sin(phi), std::cos(phi));
+  }
 
   /// Bin of the direction of `n` (any nonzero vector); `n` and `-n` have the same bin.
   std::size_t bin(const Vector& n) const { return bin_of_unit(n.normalized()); }
@@ -311,6 +302,7 @@ private:
 
   static constexpr float infinity = std::numeric_limits<float>::infinity();
 
+  double m_slice_height; // pi / n_phi
   bool m_straddling;
   float m_straddling_top;
   std::vector<Cell> m_z_cells;
@@ -321,7 +313,6 @@ private:
   std::vector<double> m_slice_area;
   std::vector<unsigned int> m_bins_in_slice;
   std::vector<std::size_t> m_first_bin;
-  std::vector<Vector> m_center;
 };
 
 } // namespace internal
