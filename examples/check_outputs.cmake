@@ -1,8 +1,9 @@
 # Checks on the files the example programs write, run by ctest:
 #   cmake -DCHECK=mesh -DFILE=out.off -DMIN_FACES=1000 -P check_outputs.cmake
 #   cmake -DCHECK=ply -DFILE=out.ply -DPOINTS=20000 -P check_outputs.cmake
-#   cmake -DCHECK=rejected -DTOOL=rrht_normals "-DARGUMENTS=a|b|c" -P check_outputs.cmake
+#   cmake -DCHECK=rejected -DTOOL=rrht_normals "-DARGUMENTS=a|b|c" [-DEXIT_CODE=2] [-DMESSAGE=text] -P check_outputs.cmake
 #   cmake -DCHECK=failed_run_keeps_output -DTOOL=rrht_normals -DGOOD=good.xyz -DINPUT=bad.xyz -DWORK=dir -P check_outputs.cmake
+#   cmake -DCHECK=upper_case_extensions -DTOOL=rrht_normals -DINPUT=points.xyz -DWORK=dir -P check_outputs.cmake
 if(CHECK STREQUAL "mesh")
   # An OFF mesh with at least MIN_FACES faces.
   file(STRINGS "${FILE}" lines LIMIT_COUNT 2)
@@ -47,6 +48,43 @@ elseif(CHECK STREQUAL "rejected")
   message(STATUS "exit code ${result}, stderr: ${errors}")
   if(NOT result MATCHES "^[12]$" OR NOT errors MATCHES "rrht_normals: ")
     message(FATAL_ERROR "expected exit code 1 or 2 and a message from rrht_normals")
+  endif()
+  # EXIT_CODE: that code exactly (2: a bad command line, found before the input is read).
+  if(DEFINED EXIT_CODE AND NOT result STREQUAL "${EXIT_CODE}")
+    message(FATAL_ERROR "expected exit code ${EXIT_CODE}")
+  endif()
+  # MESSAGE: text that the message must contain.
+  if(DEFINED MESSAGE)
+    string(FIND "${errors}" "${MESSAGE}" found)
+    if(found EQUAL -1)
+      message(FATAL_ERROR "expected a message with '${MESSAGE}'")
+    endif()
+  endif()
+elseif(CHECK STREQUAL "upper_case_extensions")
+  # .XYZ read, .XYZ and .PLY written, as their lower-case versions are, and
+  # no temporary file left.
+  file(REMOVE_RECURSE "${WORK}")
+  file(MAKE_DIRECTORY "${WORK}")
+  configure_file("${INPUT}" "${WORK}/POINTS.XYZ" COPYONLY)
+  set(fast --planes 100 --rotations 1 -q)
+  foreach(run "${INPUT};${WORK}/lower.xyz" "${WORK}/POINTS.XYZ;${WORK}/UPPER.XYZ" "${WORK}/POINTS.XYZ;${WORK}/UPPER.PLY")
+    execute_process(COMMAND "${TOOL}" ${run} ${fast} RESULT_VARIABLE result)
+    if(NOT result EQUAL 0)
+      message(FATAL_ERROR "rrht_normals ${run} failed (exit code ${result})")
+    endif()
+  endforeach()
+  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files "${WORK}/lower.xyz" "${WORK}/UPPER.XYZ" RESULT_VARIABLE differ)
+  if(differ)
+    message(FATAL_ERROR "${WORK}/UPPER.XYZ differs from ${WORK}/lower.xyz")
+  endif()
+  file(STRINGS "${WORK}/UPPER.PLY" header LIMIT_COUNT 1)
+  if(NOT header STREQUAL "ply")
+    message(FATAL_ERROR "${WORK}/UPPER.PLY is not a PLY file")
+  endif()
+  file(GLOB left RELATIVE "${WORK}" "${WORK}/*")
+  list(SORT left)
+  if(NOT left STREQUAL "POINTS.XYZ;UPPER.PLY;UPPER.XYZ;lower.xyz")
+    message(FATAL_ERROR "expected the input and three outputs in ${WORK}, found: ${left}")
   endif()
 else()
   message(FATAL_ERROR "unknown CHECK '${CHECK}'")

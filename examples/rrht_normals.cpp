@@ -16,6 +16,7 @@
 #include <CGAL/property_map.h>
 #include <CGAL/Real_timer.h>
 
+#include <boost/algorithm/string/predicate.hpp>
 #include <boost/program_options.hpp>
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -24,13 +25,15 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
-#include <map>
 #include <memory>
+#include <stdexcept>
 #include <string>
+#include <system_error>
 #include <utility>
 #include <vector>
 
@@ -43,6 +46,7 @@ typedef std::pair<Point, Vector> Point_with_normal;
 typedef CGAL::First_of_pair_property_map<Point_with_normal> Point_map;
 typedef CGAL::Second_of_pair_property_map<Point_with_normal> Normal_map;
 
+namespace fs = std::filesystem;
 namespace po = boost::program_options;
 
 namespace {
@@ -50,23 +54,58 @@ namespace {
 const int usage_error = 2;   // bad command line
 const int runtime_error = 1; // unreadable input, failed estimation or output
 
-std::string extension(const std::string& path)
+// The extensions by which CGAL::IO::read_points() and write_points() choose
+// a format (in any letter case), among those this tool offers.
+const std::vector<std::string> input_extensions = { ".xyz", ".pwn", ".ply", ".off"
+#ifdef CGAL_LINKED_WITH_LASLIB
+                                                    , ".las"
+#endif
+};
+const std::vector<std::string> output_extensions = { ".xyz", ".pwn", ".ply" };
+
+// The names of the choices of --sampling and --aggregation, each spelled once.
+const std::vector<std::pair<std::string, CGAL::RRHT::Sampling>> samplings = {
+  { "points", CGAL::RRHT::Sampling::POINTS }, { "cubes", CGAL::RRHT::Sampling::CUBES }, { "unif", CGAL::RRHT::Sampling::UNIF }
+};
+const std::vector<std::pair<std::string, CGAL::RRHT::Aggregation>> aggregations = {
+  { "mean", CGAL::RRHT::Aggregation::MEAN }, { "best", CGAL::RRHT::Aggregation::BEST },
+  { "cluster", CGAL::RRHT::Aggregation::CLUSTER }
+};
+
+// "a, b or c".
+std::string one_of(const std::vector<std::string>& names)
 {
-  const std::size_t dot = path.find_last_of('.');
-  if(dot == std::string::npos || path.find('/', dot) != std::string::npos)
-    return "";
-  std::string e = path.substr(dot + 1);
-  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return e;
+  std::string list;
+  for(std::size_t i = 0; i < names.size(); ++i)
+    list += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+  return list;
 }
 
-bool readable_extension(const std::string& e)
+template <typename T>
+std::vector<std::string> names_of(const std::vector<std::pair<std::string, T>>& table)
 {
-#ifdef CGAL_LINKED_WITH_LASLIB
-  if(e == "las" || e == "laz")
-    return true;
-#endif
-  return e == "xyz" || e == "pwn" || e == "ply" || e == "off";
+  std::vector<std::string> names;
+  for(const auto& entry : table)
+    names.push_back(entry.first);
+  return names;
+}
+
+// The value of option `name` among the names of `table`.
+template <typename T>
+T choice(const po::variables_map& options, const char* name, const std::vector<std::pair<std::string, T>>& table)
+{
+  const std::string& value = options[name].as<std::string>();
+  for(const auto& entry : table)
+    if(entry.first == value)
+      return entry.second;
+  throw po::error(std::string("--") + name + " must be " + one_of(names_of(table)) + ", not '" + value + "'");
+}
+
+bool has_extension(const fs::path& path, const std::vector<std::string>& extensions)
+{
+  const std::string extension = path.extension().string();
+  return std::any_of(extensions.begin(), extensions.end(),
+                     [&extension](const std::string& e) { return boost::algorithm::iequals(extension, e); });
 }
 
 // A progress bar on stderr, shown once a run has lasted half a second.
@@ -101,27 +140,34 @@ private:
   clock::time_point m_start, m_last;
 };
 
-// Writes the points with their normals to `path` through a temporary file
-// renamed at the end, so that a failed run never leaves a partial file in
-// place of a good one.
-bool write_atomically(const std::string& path, const std::vector<Point_with_normal>& points, int precision)
+// Writes the points with their normals to `path`, in the format of its
+// extension, through a temporary file renamed at the end, so that a failed
+// run never leaves a partial file in place of a good one. The temporary
+// file ends with the same extension, by which write_points() chooses.
+bool write_atomically(const fs::path& path, const std::vector<Point_with_normal>& points, int precision)
 {
-  const std::string e = extension(path);
-  const std::string temporary = path + ".partial." + std::to_string(::getpid()) + "." + e;
-  const auto np = CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()).stream_precision(precision);
-  const bool written = (e == "ply") ? CGAL::IO::write_PLY(temporary, points, np) : CGAL::IO::write_XYZ(temporary, points, np);
-  if(!written || std::rename(temporary.c_str(), path.c_str()) != 0)
+  fs::path temporary = path;
+  temporary += ".partial." + std::to_string(::getpid());
+  temporary += path.extension();
+  const bool written = CGAL::IO::write_points(
+    temporary.string(), points, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()).stream_precision(precision));
+  std::error_code error;
+  if(written)
+    fs::rename(temporary, path, error);
+  if(!written || error)
   {
-    std::remove(temporary.c_str());
+    fs::remove(temporary, error);
     return false;
   }
   return true;
 }
 
-template <typename T>
-void check_range(const po::variables_map& options, const char* name, T low, T high)
+// The range checks that CGAL::rrht_estimate_normals() cannot make: on the
+// command line's numbers before they are converted, and on the tool's own options.
+void check_range(const po::variables_map& options, const char* name, long long low, long long high)
 {
-  if(options.count(name) && !(options[name].as<T>() >= low && options[name].as<T>() <= high))
+  const long long value = options[name].as<long long>();
+  if(value < low || value > high)
     throw po::error(std::string("the value of --") + name + " must be from " + std::to_string(low) + " to " +
                     std::to_string(high));
 }
@@ -130,6 +176,8 @@ void check_range(const po::variables_map& options, const char* name, T low, T hi
 
 int main(int argc, char** argv)
 {
+  const std::string sampling_help = "triple sampling: " + one_of(names_of(samplings));
+  const std::string aggregation_help = one_of(names_of(aggregations));
   po::options_description described("Options");
   described.add_options()
     ("help,h", "print this help and exit")
@@ -141,9 +189,9 @@ int main(int argc, char** argv)
      "T_R: most planes drawn per accumulator (1 to 100000000)")
     ("rotations", po::value<long long>()->default_value(5), "n_rot: randomly rotated accumulators (1 to 100000)")
     ("slices", po::value<long long>()->default_value(15), "n_phi: slices of the accumulator (1 to 1000)")
-    ("sampling", po::value<std::string>()->default_value("points"), "triple sampling: points, cubes or unif")
+    ("sampling", po::value<std::string>()->default_value("points"), sampling_help.c_str())
     ("presampling", po::value<long long>()->default_value(4), "c: cubes per axis / small-ball factor (1 to 32)")
-    ("aggregation", po::value<std::string>()->default_value("cluster"), "mean, best or cluster")
+    ("aggregation", po::value<std::string>()->default_value("cluster"), aggregation_help.c_str())
     ("cluster-angle", po::value<double>()->default_value(45.), "a_cluster in degrees (0 to 180)")
     ("no-confidence-interval", "do not stop early on disjoint confidence intervals (eq. 10)")
     ("seed", po::value<long long>()->default_value(0), "random seed (0 to 4294967295)")
@@ -161,13 +209,15 @@ int main(int argc, char** argv)
 
   const std::string usage = "Usage: rrht_normals INPUT [OUTPUT] [options]\n"
                             "Estimates normals with the Robust Randomized Hough Transform (Boulch and Marlet 2012).\n"
-                            "INPUT: .xyz, .pwn, .ply or .off"
-#ifdef CGAL_LINKED_WITH_LASLIB
-                            ", .las"
-#endif
-                            "; OUTPUT: .xyz, .pwn or .ply with normals (default: INPUT's name + _normals.xyz,\n"
+                            "INPUT: " + one_of(input_extensions) + "; OUTPUT: " + one_of(output_extensions) +
+                            " with normals (default: INPUT's name + _normals.xyz,\n"
                             "in the current folder). A failed run leaves OUTPUT as it was.\n";
+
   po::variables_map options;
+  Progress_bar bar(false);
+  const std::function<bool(double)> callback = [&bar](double advancement) { return bar(advancement); };
+  std::function<void(std::vector<Point_with_normal>&)> estimate;
+  std::string input, output;
   try
   {
     po::store(po::command_line_parser(argc, argv).options(all).positional(positional).run(), options);
@@ -179,55 +229,49 @@ int main(int argc, char** argv)
     }
     if(!options.count("input"))
       throw po::error("no input file");
-    check_range<long long>(options, "neighbors", 0, 4294967295LL);
-    check_range<long long>(options, "seed", 0, 4294967295LL);
-    check_range<long long>(options, "threads", 0, 1024);
-    check_range<long long>(options, "rotations", 1, 100000);
-    check_range<long long>(options, "slices", 1, 1000);
-    check_range<long long>(options, "presampling", 1, 32);
-    check_range<double>(options, "cluster-angle", 0, 180);
-    check_range<long long>(options, "precision", 1, 17);
-    check_range<double>(options, "radius", 0, 1e300);
-    if(options["planes"].as<long long>() != 0)
-      check_range<long long>(options, "planes", 1, 100000000);
-    if(options["neighbors"].as<long long>() == 0 && options["radius"].as<double>() == 0)
-      throw po::error("-k 0 needs a --radius");
+    check_range(options, "neighbors", 0, 4294967295LL); // k is an unsigned int
+    check_range(options, "seed", 0, 4294967295LL);      // so is the seed
+    check_range(options, "threads", 0, 1024);
+    check_range(options, "precision", 1, 17);
+
+    input = options["input"].as<std::string>();
+    output = options.count("output") ? options["output"].as<std::string>()
+                                     : fs::path(input).stem().string() + "_normals.xyz";
+    if(!has_extension(input, input_extensions))
+      throw po::error("cannot read '" + input + "': the input must be " + one_of(input_extensions));
+    if(!has_extension(output, output_extensions))
+      throw po::error("cannot write '" + output + "': the output must be " + one_of(output_extensions));
+
+    const unsigned int k = static_cast<unsigned int>(options["neighbors"].as<long long>());
+    const long long planes = options["planes"].as<long long>(); // 0: the library's default
+    const auto np = CGAL::RRHT::parameters::point_map(Point_map())
+                      .normal_map(Normal_map())
+                      .neighbor_radius(options["radius"].as<double>())
+                      .number_of_rotations(options["rotations"].as<long long>())
+                      .accumulator_slices(options["slices"].as<long long>())
+                      .use_confidence_interval(options.count("no-confidence-interval") == 0)
+                      .sampling(choice(options, "sampling", samplings))
+                      .presampling_factor(options["presampling"].as<long long>())
+                      .aggregation(choice(options, "aggregation", aggregations))
+                      .cluster_angle(options["cluster-angle"].as<double>())
+                      .random_seed(static_cast<unsigned int>(options["seed"].as<long long>()))
+                      .callback(callback);
+    // The estimation with the parameters of the command line, run once on no
+    // point before the input is read: CGAL::rrht_estimate_normals() checks
+    // its parameters before it looks at the points, so that a value out of
+    // its ranges is a usage error, with the library's own message.
+    estimate = [k, planes, np](std::vector<Point_with_normal>& points) {
+      if(planes != 0)
+        CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(points, k, np.number_of_planes(planes));
+      else
+        CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(points, k, np);
+    };
+    std::vector<Point_with_normal> no_point;
+    estimate(no_point);
   }
-  catch(const po::error& e)
+  catch(const std::logic_error& e) // po::error, or std::invalid_argument from the library
   {
     std::cerr << "rrht_normals: " << e.what() << "\n" << usage << "Try 'rrht_normals --help'." << std::endl;
-    return usage_error;
-  }
-
-  const std::string input = options["input"].as<std::string>();
-  std::string output = options.count("output") ? options["output"].as<std::string>() : std::string();
-  if(output.empty())
-  {
-    const std::string name = input.substr(input.find_last_of('/') + 1);
-    output = name.substr(0, name.find_last_of('.')) + "_normals.xyz";
-  }
-  // Each name is spelled once: the tables both map and validate.
-  const std::map<std::string, CGAL::RRHT::Sampling> samplings = {
-    { "points", CGAL::RRHT::Sampling::POINTS }, { "cubes", CGAL::RRHT::Sampling::CUBES }, { "unif", CGAL::RRHT::Sampling::UNIF }
-  };
-  const std::map<std::string, CGAL::RRHT::Aggregation> aggregations = {
-    { "mean", CGAL::RRHT::Aggregation::MEAN }, { "best", CGAL::RRHT::Aggregation::BEST },
-    { "cluster", CGAL::RRHT::Aggregation::CLUSTER }
-  };
-  const auto sampling = samplings.find(options["sampling"].as<std::string>());
-  const auto aggregation = aggregations.find(options["aggregation"].as<std::string>());
-  std::string problem;
-  if(sampling == samplings.end())
-    problem = "--sampling must be points, cubes or unif, not '" + options["sampling"].as<std::string>() + "'";
-  else if(aggregation == aggregations.end())
-    problem = "--aggregation must be mean, best or cluster, not '" + options["aggregation"].as<std::string>() + "'";
-  else if(!readable_extension(extension(input)))
-    problem = "cannot read '" + input + "': the input must be .xyz, .pwn, .ply or .off";
-  else if(extension(output) != "xyz" && extension(output) != "pwn" && extension(output) != "ply")
-    problem = "cannot write '" + output + "': the output must be .xyz, .pwn or .ply";
-  if(!problem.empty())
-  {
-    std::cerr << "rrht_normals: " << problem << std::endl;
     return usage_error;
   }
 
@@ -257,29 +301,12 @@ int main(int argc, char** argv)
 #endif
 
   // Estimate.
-  Progress_bar bar(!options.count("quiet") && ::isatty(STDERR_FILENO));
-  const std::function<bool(double)> callback = [&bar](double advancement) { return bar(advancement); };
-  auto np = CGAL::RRHT::parameters::point_map(Point_map())
-              .normal_map(Normal_map())
-              .neighbor_radius(options["radius"].as<double>())
-              .number_of_rotations(options["rotations"].as<long long>())
-              .accumulator_slices(options["slices"].as<long long>())
-              .use_confidence_interval(options.count("no-confidence-interval") == 0)
-              .sampling(sampling->second)
-              .presampling_factor(options["presampling"].as<long long>())
-              .aggregation(aggregation->second)
-              .cluster_angle(options["cluster-angle"].as<double>())
-              .random_seed(static_cast<unsigned int>(options["seed"].as<long long>()))
-              .callback(callback);
-  const unsigned int k = static_cast<unsigned int>(options["neighbors"].as<long long>());
+  bar = Progress_bar(!options.count("quiet") && ::isatty(STDERR_FILENO)); // its clock starts now
   CGAL::Real_timer timer;
   timer.start();
   try
   {
-    if(options["planes"].as<long long>() != 0)
-      CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(points, k, np.number_of_planes(options["planes"].as<long long>()));
-    else
-      CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(points, k, np);
+    estimate(points);
   }
   catch(const std::exception& e)
   {

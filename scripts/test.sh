@@ -9,11 +9,13 @@
 #     build/cgal without installing anything, and checks that the normals
 #     are the same, bit for bit, as with the system's CGAL (skipped, with a
 #     message, when ../shared/cgal is absent; RRHT_CGAL_VERSIONS=0 skips it);
-#  4. builds in Release with clang and runs the suite (RRHT_CLANG=0 skips it).
+#  4. builds in Release with clang and runs the suite (RRHT_CLANG=0 skips it);
+#  5. builds the reference documentation with Doxygen (scripts/build_docs.sh),
+#     which fails on any warning.
 # Every build fails on a compiler warning.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-extra_packages=()
+extra_packages=(doxygen)
 [ "${RRHT_CLANG:-1}" != "0" ] && extra_packages+=(clang)
 bash "$root/scripts/install_dependencies.sh" "${extra_packages[@]}"
 jobs=$(nproc)
@@ -80,6 +82,9 @@ if [ "${RRHT_CGAL_VERSIONS:-1}" != "0" ]; then
     done
   fi
 fi
+
+echo "== Reference documentation (Doxygen, fails on any warning)"
+bash "$root/scripts/build_docs.sh"
 
 if [ "${RRHT_CLANG:-1}" != "0" ]; then
   echo "== Release build and tests with clang"

@@ -409,10 +409,12 @@ TEST_CASE("Bad input: a clear exception or a documented result, never NaN", "[ap
   const auto maps = params::extend(pair_maps<SC>);
   const SC::Vector_3 null(CGAL::NULL_VECTOR);
 
-  SECTION("empty range: nothing to do")
+  SECTION("empty range: nothing to do, but the parameters are checked (rrht_normals relies on it)")
   {
     Pair_cloud<SC> cloud;
     CHECK_NOTHROW(estimate(cloud, 10, maps));
+    CHECK_THROWS_AS(estimate(cloud, 10, maps.number_of_planes(0)), std::invalid_argument);
+    CHECK_THROWS_AS(estimate(cloud, 0, maps), std::invalid_argument);
   }
   SECTION("1 and 2 points, all points identical, collinear points: the null vector")
   {

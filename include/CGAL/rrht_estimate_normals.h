@@ -76,6 +76,7 @@ namespace CGAL {
                           `Parallel_tag`, and `Parallel_if_available_tag`.
    \tparam PointRange is a model of `Range`. The value type of
    its iterator is the key type of the named parameter `point_map`.
+   \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
 
    \param points input point range
    \param k number of neighbors (the neighborhood of a point is the point and its `k` nearest neighbors),

@@ -14,13 +14,25 @@ namespace CGAL {
 namespace RRHT {
 
 /// \ingroup PkgRRHTRef
-/// Global upper bound T_R on the number of planes to draw (eq. 7): the least
-/// T such that, with probability at least `alpha`, the empirical vote share
-/// of every one of the `number_of_bins` bins is within `delta` of its
-/// probability (Hoeffding's inequality and a union bound over the bins):
-///   T_R = ceil( ln(2 M / (1 - alpha)) / (2 delta^2) ).
+/// Global upper bound T_R on the number of planes to draw (equation 7 of the
+/// paper): the least T such that, with probability at least `alpha`, the
+/// empirical vote share of every one of the `number_of_bins` bins is within
+/// `delta` of its probability (Hoeffding's inequality and a union bound over
+/// the bins):
+/// \code{.unparsed}
+///   T_R = ceil( ln(2 M / (1 - alpha)) / (2 delta^2) )
+/// \endcode
 /// With alpha = 0.95, delta = 0.08 and M = 171 it gives 690; the paper rounds
-/// it to 700 (Section 6).
+/// it to 700 (Section 6). It is the default of the named parameter
+/// `number_of_planes` of `CGAL::rrht_estimate_normals()`, with the defaults of
+/// `alpha` and `delta` and the number of bins of the accumulator.
+///
+/// \param number_of_bins M, the number of bins of the accumulator (at least 1)
+/// \param alpha the confidence level, strictly between 0 and 1
+/// \param delta the largest error on the vote share of a bin, strictly between 0 and 1
+/// \return T_R, at least 1
+/// \throws std::invalid_argument if `number_of_bins` is 0 or `alpha` or `delta`
+///         is not strictly between 0 and 1
 inline std::size_t hoeffding_number_of_planes(std::size_t number_of_bins, double alpha = 0.95, double delta = 0.08)
 {
   if(number_of_bins == 0 || !(alpha > 0 && alpha < 1) || !(delta > 0 && delta < 1))

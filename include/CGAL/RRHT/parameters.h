@@ -35,6 +35,7 @@ CGAL_RRHT_NAMED_PARAMETERS(CGAL_RRHT_DECLARE_TAG)
 } // namespace internal_np
 /// \endcond
 
+/// \ingroup PkgRRHTRef
 /// A chain of named parameters that accepts both the named parameters of
 /// \cgal (`point_map`, `normal_map`, `neighbor_radius`, ...) and those of
 /// RRHT (`number_of_planes`, `sampling`, ...), in any order.
@@ -43,16 +44,35 @@ CGAL_RRHT_NAMED_PARAMETERS(CGAL_RRHT_DECLARE_TAG)
 /// takes named parameters reads it unchanged, and ignores the RRHT entries.
 /// Only the member functions differ, each returning this type again so that
 /// the chain goes on. A chain is started from `CGAL::RRHT::parameters`.
+///
+/// Besides `combine()`, it has one member function per named parameter,
+/// named after it and taking its value, which appends that parameter:
+/// - one per named parameter of \cgal (`point_map()`, `normal_map()`,
+///   `neighbor_radius()`, `callback()`, `random_seed()`, `geom_traits()`, ...,
+///   all those of the \cgal version in use);
+/// - one per named parameter of RRHT: `number_of_planes()`,
+///   `accumulator_slices()`, `number_of_rotations()`,
+///   `use_confidence_interval()`, `sampling()`, `presampling_factor()`,
+///   `aggregation()` and `cluster_angle()`.
+///
+/// The parameters that `CGAL::rrht_estimate_normals()` reads, their types
+/// and their defaults are listed in its documentation.
+///
+/// \tparam T the type of the value of the last parameter of the chain
+/// \tparam Tag the tag of the last parameter of the chain
+/// \tparam Base the rest of the chain
 template <typename T, typename Tag, typename Base = CGAL::internal_np::No_property>
 struct Named_function_parameters
   : CGAL::Named_function_parameters<T, Tag, Base>
 {
+  /// \cond SKIP_IN_MANUAL
   typedef CGAL::Named_function_parameters<T, Tag, Base> Cgal_parameters;
   typedef Named_function_parameters<T, Tag, Base> self;
 
   Named_function_parameters() : Cgal_parameters() {}
   Named_function_parameters(const T& v) : Cgal_parameters(v) {}
   Named_function_parameters(const T& v, const Base& b) : Cgal_parameters(v, b) {}
+  /// \endcond
 
   // CGAL's parameters, generated from CGAL's own list so that none is
   // missing, whatever the version: CGAL 5.6 and later also list parameters
@@ -84,15 +104,23 @@ struct Named_function_parameters
 #undef CGAL_RRHT_MEMBER_BY_VALUE
 #undef CGAL_RRHT_MEMBER_BY_REFERENCE
 
-  /// Appends the parameter of the one-parameter chain `np` (and of `nps`), as
+  /// Appends the parameter of the one-parameter chain `np`, as
   /// `CGAL::Named_function_parameters::combine()` of \cgal 6 does, and stays
   /// an RRHT chain.
+  /// \param np a chain of one named parameter, e.g. `CGAL::parameters::point_map(pm)`
+  /// \return this chain followed by the parameter of `np`
   template <typename OT, typename OTag>
   Named_function_parameters<OT, OTag, self> combine(const CGAL::Named_function_parameters<OT, OTag>& np) const
   {
     return Named_function_parameters<OT, OTag, self>(CGAL::internal_np::get_reference(np.v), *this);
   }
 
+  /// Appends the parameters of the one-parameter chains `np` and `nps`, in
+  /// this order, as `CGAL::Named_function_parameters::combine()` of \cgal 6
+  /// does, and stays an RRHT chain.
+  /// \param np a chain of one named parameter
+  /// \param nps more chains of one named parameter each
+  /// \return this chain followed by the parameters of `np` and `nps`
   template <typename OT, typename OTag, typename... NPS>
   auto combine(const CGAL::Named_function_parameters<OT, OTag>& np, const NPS&... nps) const
   {
@@ -118,11 +146,22 @@ struct Named_function_parameters
 /// params::sampling(CGAL::RRHT::Sampling::CUBES).neighbor_radius(0.1).normal_map(nm)
 /// params::extend(np).number_of_rotations(2)   // np: any CGAL named-parameter chain
 /// \endcode
+///
+/// Each of these functions is named after a named parameter, takes its value
+/// and returns a `CGAL::RRHT::Named_function_parameters` that holds it:
+/// one per named parameter of \cgal (`point_map()`, `normal_map()`,
+/// `neighbor_radius()`, ...) and one per named parameter of RRHT
+/// (`number_of_planes()`, `accumulator_slices()`, `number_of_rotations()`,
+/// `use_confidence_interval()`, `sampling()`, `presampling_factor()`,
+/// `aggregation()`, `cluster_angle()`).
+/// \ingroup PkgRRHTRef
 namespace parameters {
 
+/// The type of an empty chain, `default_values()`.
 typedef RRHT::Named_function_parameters<bool, CGAL::internal_np::all_default_t> Default_named_parameters;
 
 /// An empty chain, to be continued with any parameter.
+/// \return a chain that holds no parameter
 inline Default_named_parameters default_values() { return Default_named_parameters(); }
 
 #define CGAL_RRHT_FUNCTION_BY_VALUE(X, Y, Z)                                    \
@@ -199,9 +238,12 @@ struct Extended<RRHT::Named_function_parameters<T, Tag, Base> >
 } // namespace internal
 /// \endcond
 
-/// Continues an existing chain of \cgal named parameters with RRHT ones, e.g.
-/// `CGAL::RRHT::parameters::extend(np).number_of_planes(300)` in a function
-/// that received `np` from its caller.
+/// Continues an existing chain of \cgal named parameters with RRHT ones. For
+/// example, `CGAL::RRHT::parameters::extend(np).number_of_planes(300)` in a
+/// function that received `np` from its caller.
+/// \param np a chain of \cgal named parameters (or an RRHT chain)
+/// \return a `CGAL::RRHT::Named_function_parameters` holding the same
+///         parameters as `np`, in the same order
 template <typename T, typename Tag, typename Base>
 typename internal::Extended<CGAL::Named_function_parameters<T, Tag, Base> >::type
 extend(const CGAL::Named_function_parameters<T, Tag, Base>& np)

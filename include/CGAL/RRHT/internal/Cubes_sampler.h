@@ -58,8 +58,7 @@ public:
       std::uint32_t cube = 0;
       for(int d = 0; d < 3; ++d)
       {
-        // Clamped, then truncated: the floor, without a call to
-        // `std::floor()`, which has no SSE2 instruction.
+        // Clamped to the cubes, then truncated: the floor of a number >= 0.
         const double x = (points[i][d] + radius) * to_cubes;
         cube = cube * c + std::uint32_t((std::min)((std::max)(x, 0.), last));
       }

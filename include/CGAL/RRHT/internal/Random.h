@@ -13,6 +13,7 @@
 #include <CGAL/number_type_config.h>
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 
 namespace CGAL {
@@ -55,6 +56,18 @@ public:
     return x;
   }
 
+  /// The next `count` numbers of the stream, split into their low and high
+  /// 32 bits: the random bits of the vectorized loops of the samplers.
+  void split_words(std::size_t count, std::uint32_t* low, std::uint32_t* high)
+  {
+    for(std::size_t i = 0; i < count; ++i)
+    {
+      const std::uint64_t word = (*this)();
+      low[i] = std::uint32_t(word);
+      high[i] = std::uint32_t(word >> 32);
+    }
+  }
+
   /// Uniform double in [0, 1), from the 53 high bits.
   double uniform_real() { return double((*this)() >> 11) * 0x1.0p-53; }
 
@@ -83,12 +96,13 @@ public:
     return low >= range || low >= std::uint32_t(-range) % range;
   }
 
-  /// Uniform integers in [0, range) for range <= 2^12 from the 16 low bits
+  /// Uniform integers in [0, range) for range <= `max_range16` (2^12) from the 16 low bits
   /// of `bits` (Lemire's method on 16 bits), in 32-bit signed arithmetic
   /// (the product stays below 2^28) so that loops over them vectorize:
   /// `draw16(bits, range, rejection_threshold16(range), x)` sets x to
   /// ((bits mod 2^16) * range) >> 16 and returns false, with probability
   /// below range / 2^16, when the draw must be made again.
+  static constexpr std::uint32_t max_range16 = 1u << 12;
   static std::int32_t rejection_threshold16(std::uint32_t range) { return std::int32_t((1u << 16) % range); }
   static bool draw16(std::uint32_t bits, std::int32_t range, std::int32_t threshold, std::int32_t& x)
   {

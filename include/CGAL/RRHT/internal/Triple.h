@@ -7,6 +7,7 @@
 #define CGAL_RRHT_INTERNAL_TRIPLE_H
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 
 namespace CGAL {
@@ -16,6 +17,9 @@ namespace internal {
 /// Three distinct indices into a neighborhood: the points through which a
 /// plane is drawn.
 typedef std::array<std::uint32_t, 3> Triple;
+
+/// The triples that the vectorized loops of the samplers compute at a time.
+constexpr std::size_t triples_per_chunk = 64;
 
 } // namespace internal
 } // namespace RRHT

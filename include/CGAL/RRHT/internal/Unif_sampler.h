@@ -11,6 +11,7 @@
 #include <CGAL/RRHT/internal/Random.h>
 #include <CGAL/RRHT/internal/Triple.h>
 #include <CGAL/RRHT/internal/Weighted_points_sampler.h>
+#include <CGAL/RRHT/internal/integer_floor.h>
 
 #include <Eigen/Core>
 
@@ -244,7 +245,7 @@ private:
   {
     const std::int32_t R = std::int32_t(m_c) * L, D = 2 * R + 1;
     const float squared_small = float(L * L), squared_ball = float(R) * float(R);
-    const std::int32_t base_y = floor(u.y()), base_z = floor(u.z());
+    const std::int32_t base_y = floor_to_int(u.y()), base_z = floor_to_int(u.z());
     const float ux = u.x(), fy = u.y() - float(base_y), fz = u.z() - float(base_z);
     const float by = float(base_y) + shift.y(), bz = float(base_z) + shift.z();
     const Candidate_offsets& offsets = candidate_offsets();
@@ -268,11 +269,11 @@ private:
     half_ball_map = Eigen::Map<const Candidates>(in_ball).max(0.f).sqrt();
     for(std::int32_t k = 0; k < candidate_rows; ++k)
     {
-      const std::int32_t small_first = ceil(ux - half_small[k]), small_last = floor(ux + half_small[k]);
+      const std::int32_t small_first = ceil_to_int(ux - half_small[k]), small_last = floor_to_int(ux + half_small[k]);
       nodes[k] = (in_small[k] >= 0) ? small_last - small_first + 1 : 0;
       // In B_P, and in [-R, R]^3 whatever the rounding.
-      const std::int32_t x_first = (std::max)((std::max)(small_first, ceil(-half_ball[k] - shift.x())), -R);
-      const std::int32_t x_last = (std::min)((std::min)(small_last, floor(half_ball[k] - shift.x())), R);
+      const std::int32_t x_first = (std::max)((std::max)(small_first, ceil_to_int(-half_ball[k] - shift.x())), -R);
+      const std::int32_t x_last = (std::min)((std::min)(small_last, floor_to_int(half_ball[k] - shift.x())), R);
       const std::int32_t y = base_y + offsets.y_int[k], z = base_z + offsets.z_int[k];
       const bool is_kept = (in_small[k] >= 0) & (in_ball[k] >= 0) & (x_first <= x_last) & (y >= -R) & (y <= R) &
                            (z >= -R) & (z <= R);
@@ -306,19 +307,6 @@ private:
     }
     m_touched = touched;
     return spans;
-  }
-
-  // floor(x) and ceil(x) for |x| < 2^31, without `std::floor()` (it has no
-  // SSE2 instruction, and is a call): the truncation, corrected.
-  static std::int32_t floor(float x)
-  {
-    const std::int32_t t = std::int32_t(x);
-    return t - std::int32_t(float(t) > x);
-  }
-  static std::int32_t ceil(float x)
-  {
-    const std::int32_t t = std::int32_t(x);
-    return t + std::int32_t(float(t) < x);
   }
 
   unsigned int m_c;

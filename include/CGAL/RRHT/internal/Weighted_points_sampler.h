@@ -29,7 +29,7 @@ namespace internal {
 /// A point is drawn in constant time with Walker's alias method: one random
 /// word gives a point and whether to keep it or take its alias, with one
 /// table read. A draw costs one random word, for neighborhoods of at most
-/// 2^12 points (`small_limit`): 16 bits for the point (Lemire's method,
+/// 2^12 points (`Random::max_range16`): 16 bits for the point (Lemire's method,
 /// rejected with probability below n / 2^16) and 30 bits for the choice of
 /// its alias. `draw()` computes the three draws of 64 triples at a time
 /// with loops without branches, which the compiler vectorizes (and compiles
@@ -84,13 +84,13 @@ public:
       set_always_kept(m_small[s]);
     for(std::uint32_t l = 0; l < larges; ++l)
       set_always_kept(m_large[l]);
-    m_rejection_threshold = (m_n != 0 && m_n <= small_limit) ? Random::rejection_threshold16(m_n) : 0;
+    m_rejection_threshold = (m_n != 0 && m_n <= Random::max_range16) ? Random::rejection_threshold16(m_n) : 0;
   }
 
   /// Writes `count` triples of distinct points to `out`; returns `count`.
   std::size_t draw(Random& rng, std::size_t count, Triple* out)
   {
-    if(m_n > small_limit)
+    if(m_n > Random::max_range16)
     {
       for(std::size_t i = 0; i < count; ++i)
         draw_distinct_triple(*this, m_n, rng, out[i]);
@@ -103,7 +103,7 @@ public:
   /// One point (for `draw_distinct_triple()`): the draw of `draw()`.
   std::uint32_t draw_point(Random& rng)
   {
-    if(m_n > small_limit)
+    if(m_n > Random::max_range16)
     {
       const std::uint32_t i = rng.uniform_index(m_n);
       return choose(std::int32_t(i), std::uint32_t(rng() >> 32), m_keep.data(), m_alias.data());
@@ -127,7 +127,7 @@ private:
     return std::uint32_t((alias[i] & alias_mask) | (i & ~alias_mask));
   }
 
-  // The triples of `draw()` when n <= small_limit, a chunk of T triples at
+  // The triples of `draw()` when n <= Random::max_range16, a chunk of T triples at
   // a time. The first draws of the T triples come first, then their second
   // draws, then their third ones; they are computed by loops without
   // branches (the table reads are gathers with AVX2). When the three draws
@@ -140,20 +140,15 @@ private:
   // vectorize the loops).
   void draw_triples(Random& rng, std::size_t count, Triple* out)
   {
-    std::uint32_t low_bits[3 * chunk], high_bits[3 * chunk];
-    std::int32_t point[3 * chunk], accepted[3 * chunk];
-    std::int32_t is_triple[chunk]; // its three draws are the triple
+    std::uint32_t low_bits[3 * triples_per_chunk], high_bits[3 * triples_per_chunk];
+    std::int32_t point[3 * triples_per_chunk], accepted[3 * triples_per_chunk];
+    std::int32_t is_triple[triples_per_chunk]; // its three draws are the triple
     const std::int32_t n = std::int32_t(m_n), threshold = m_rejection_threshold;
     const std::int32_t *keep = m_keep.data(), *alias = m_alias.data();
     for(std::size_t written = 0; written < count;)
     {
-      const std::size_t triples = (std::min)(chunk, count - written), draws = 3 * triples;
-      for(std::size_t j = 0; j < draws; ++j)
-      {
-        const std::uint64_t word = rng();
-        low_bits[j] = std::uint32_t(word);
-        high_bits[j] = std::uint32_t(word >> 32);
-      }
+      const std::size_t triples = (std::min)(triples_per_chunk, count - written), draws = 3 * triples;
+      rng.split_words(draws, low_bits, high_bits);
       for(std::size_t j = 0; j < draws; ++j)
       {
         std::int32_t i;
@@ -196,8 +191,6 @@ private:
   }
 
   static constexpr std::int32_t always_keep = 1 << 30;
-  static constexpr std::uint32_t small_limit = 1u << 12;
-  static constexpr std::size_t chunk = 64; // triples computed at a time
 
   Instruction_set m_instruction_set;
   std::uint32_t m_n = 0;
