@@ -8,6 +8,8 @@
 
 #include <CGAL/RRHT/internal/Random.h>
 
+#include <CGAL/number_type_config.h>
+
 #include <catch2/catch.hpp>
 
 #include <Eigen/Core>

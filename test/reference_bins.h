@@ -51,7 +51,7 @@ public:
     return first_of_slice[s] + (std::min)(std::size_t(position), bins - 1);
   }
 
-  static constexpr double pi = 3.14159265358979323846;
+  static constexpr double pi = CGAL_PI;
   std::vector<std::size_t> first_of_slice;
 
 private:

@@ -13,7 +13,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -52,7 +54,7 @@ struct Normal_of_sample
   friend void put(Normal_of_sample, Sample& s, const Vector& n) { s.normal = n; }
 };
 
-const double pi = 3.14159265358979323846;
+const double pi = CGAL_PI;
 
 /// The diagonal of the axis-aligned bounding box of the points.
 inline double bounding_box_diagonal(const Cloud& cloud)
@@ -275,6 +277,46 @@ Errors errors(const Cloud& cloud, Keep keep, double tau = 10)
 inline Errors errors(const Cloud& cloud, double tau = 10)
 {
   return errors(cloud, [](const Sample& s) { return s.truth != CGAL::NULL_VECTOR; }, tau);
+}
+
+/// Rounds every coordinate to a multiple of `step` (a power of 2, say
+/// 2^-20): such a cloud translated by any offset of a few million, as in
+/// georeferenced coordinates, has exact coordinates in double precision.
+inline void quantize(Cloud& cloud, double step)
+{
+  for(Sample& s : cloud)
+    s.point = Point(std::round(s.point.x() / step) * step, std::round(s.point.y() / step) * step,
+                    std::round(s.point.z() / step) * step);
+}
+
+/// Translates the points of the cloud by `offset` (rounded to double).
+inline void translate(Cloud& cloud, const Vector& offset)
+{
+  for(Sample& s : cloud)
+    s.point = s.point + offset;
+}
+
+/// Reads the points of a text file of lines "x y z ..." (the rest of a line
+/// is ignored), keeping one line in `every`; they have no truth. Returns
+/// false if the file cannot be read or has no point.
+inline bool read_xyz(const std::string& path, std::size_t every, Cloud& cloud)
+{
+  std::ifstream in(path);
+  cloud.clear();
+  std::string line;
+  for(std::size_t i = 0; std::getline(in, line); ++i)
+  {
+    std::istringstream fields(line);
+    double x, y, z;
+    if(i % every == 0 && (fields >> x >> y >> z))
+    {
+      Sample s;
+      s.point = Point(x, y, z);
+      s.truth = CGAL::NULL_VECTOR;
+      cloud.push_back(s);
+    }
+  }
+  return !cloud.empty();
 }
 
 } // namespace rrht_test

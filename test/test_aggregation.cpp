@@ -20,7 +20,7 @@ TEST_CASE("Aggregation: mean, best and cluster", "[aggregation]")
   const Eigen::Vector3d z(0, 0, 1), x(1, 0, 0);
   const Eigen::Vector3d z10 = Eigen::Vector3d(std::sin(0.17), 0, std::cos(0.17)); // ~10 degrees from z
   const std::vector<Candidate_normal> candidates = { { x, 50 }, { z, 30 }, { -z10, 30 }, { Eigen::Vector3d::Zero(), 0 } };
-  const double cos45 = std::cos(3.14159265358979323846 / 4);
+  const double cos45 = std::cos(CGAL_PI / 4);
 
   CHECK(aggregate(candidates, Aggregation::BEST, cos45) == x);
   // The z cluster (60 votes) beats x (50); its mean lies between z and z10.

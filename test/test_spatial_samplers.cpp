@@ -281,7 +281,7 @@ TEST_CASE("Cube weights are the volume of the cubes inside the ball", "[sampling
     for(std::size_t i = 0; i < std::size_t(c) * c * c; ++i)
       volume += weights.weight(i) * (8. / (c * c * c));
     INFO("c = " << c);
-    CHECK(volume == Approx(4. / 3. * 3.14159265358979323846).epsilon(0.01));
+    CHECK(volume == Approx(4. / 3. * CGAL_PI).epsilon(0.01));
   }
   const Cube_weights four(4);
   CHECK(four.weight((1 * 4 + 1) * 4 + 1) == Approx(1)); // an inner cube

@@ -37,8 +37,8 @@ namespace internal {
 /// M of bins (Fig. 4) but not its rounding: this rule reproduces Fig. 4
 /// within 14% (n_phi = 5, 10, 15, 20, 25 give M = 20, 77, 172, 303, 475
 /// against 23, 82, 171, 290, 441) while every bin keeps an area within 10%
-/// of every other one (the ratio of the smallest to the largest area is
-/// `area_ratio()`, at least 0.9 for n_phi <= 60).
+/// of every other one (the ratio of the smallest to the largest area is at
+/// least 0.9 for n_phi <= 60, tested).
 ///
 /// Bin index. The slice comes from the z coordinate against the cosines of
 /// the slice boundaries; the bin within the slice from the azimuth. Both are
@@ -164,18 +164,6 @@ public:
     return m_slice_area[s] / m_bins_in_slice[s];
   }
 
-  /// Smallest bin area over largest bin area.
-  double area_ratio() const
-  {
-    double lo = area(0), hi = area(0);
-    for(std::size_t b = 1; b < size(); ++b)
-    {
-      lo = (std::min)(lo, area(b));
-      hi = (std::max)(hi, area(b));
-    }
-    return lo / hi;
-  }
-
   /// The unit direction at the center of bin `bin`, in polar angle and
   /// azimuth (computed on demand: only tests need it).
   Vector center(std::size_t bin) const
@@ -188,14 +176,14 @@ public:
     return Vector(std::cos(theta) * std::sin(phi), std::sin(theta) * std::sin(phi), std::cos(phi));
   }
 
-  /// Bin of the direction of `n` (any nonzero vector); `n` and `-n` have the same bin.
-  std::size_t bin(const Vector& n) const { return bin_of_unit(n.normalized()); }
-
-  /// Bin of the unit vector `n`.
-  std::size_t bin_of_unit(const Vector& n) const
+  /// Bin of the direction of `n` (any nonzero vector); `n` and `-n` have
+  /// the same bin. (The planes of a batch get theirs from `representative()`
+  /// and `bin_of_representative()`.)
+  std::size_t bin(const Vector& n) const
   {
+    const Vector unit = n.normalized();
     double sign;
-    return bin_and_sign(n.x(), n.y(), n.z(), sign);
+    return bin_and_sign(unit.x(), unit.y(), unit.z(), sign);
   }
 
   /// Bin of the unit vector (x, y, z), in double or single precision, and

@@ -94,7 +94,11 @@ public:
       m_touched_rows.resize(std::size_t(D) * D);
     }
     const std::uint32_t n = std::uint32_t(points.size());
-    const Eigen::Vector3d shift(rng.uniform_real(), rng.uniform_real(), rng.uniform_real());
+    // Three draws in sequence, z first: the order in which GCC evaluated the
+    // arguments of the constructor that drew them before (an order that C++
+    // leaves unspecified, and clang takes the other way).
+    const double shift_z = rng.uniform_real(), shift_y = rng.uniform_real(), shift_x = rng.uniform_real();
+    const Eigen::Vector3d shift(shift_x, shift_y, shift_z);
 
     // 1. The spans, point by point; each row keeps its first and last node.
     m_spans.resize(std::size_t(n) * candidate_rows);
