@@ -17,6 +17,7 @@
 #include <fstream>
 #include <iomanip>
 #include <string>
+#include <utility>
 
 using namespace rrht_test;
 namespace params = CGAL::RRHT::parameters;
@@ -37,7 +38,7 @@ Errors jet(Cloud& cloud)
   return errors(cloud);
 }
 
-void print(const char* what, const Errors& e)
+void print(const std::string& what, const Errors& e)
 {
   WARN(what << ": " << 100 * e.share_above << "% above 10 degrees, RMS " << e.rms << ", RMS_10 " << e.rms_tau
             << ", max " << e.max);
@@ -65,25 +66,23 @@ TEST_CASE("Outliers (Fig. 15): +100% barely changes the RRHT normals, +300% less
   const Errors r0 = rrht(cloud);
   print("sphere, no outliers, RRHT", r0);
 
-  cloud = clean;
-  add_outliers(cloud, 100, r, 21);
-  REQUIRE(cloud.size() == 8000);
-  const Errors r1 = rrht(cloud);
-  const Errors j1 = jet(cloud);
-  print("sphere, +100% outliers, RRHT", r1);
-  print("sphere, +100% outliers, jet", j1);
+  // RRHT and jet fitting with `percent` outliers, on the points of the sphere.
+  auto with_outliers = [&](double percent) {
+    cloud = clean;
+    add_outliers(cloud, percent, r, 21);
+    REQUIRE(cloud.size() == std::size_t(4000 * (1 + percent / 100)));
+    const std::pair<Errors, Errors> errors(rrht(cloud), jet(cloud));
+    print("sphere, +" + std::to_string(int(percent)) + "% outliers, RRHT", errors.first);
+    print("sphere, +" + std::to_string(int(percent)) + "% outliers, jet", errors.second);
+    return errors;
+  };
+  const auto [r1, j1] = with_outliers(100);
   // The paper: "adding +100% outliers yields an extra +0.04 on the RMS".
   CHECK(r1.share_above <= 0.005);
   CHECK(r1.rms < r0.rms + 0.5);
   CHECK(r1.rms < 0.8 * j1.rms);
 
-  cloud = clean;
-  add_outliers(cloud, 300, r, 21);
-  REQUIRE(cloud.size() == 16000);
-  const Errors r3 = rrht(cloud);
-  const Errors j3 = jet(cloud);
-  print("sphere, +300% outliers, RRHT", r3);
-  print("sphere, +300% outliers, jet", j3);
+  const auto [r3, j3] = with_outliers(300);
   CHECK(r3.share_above < 0.08);
   CHECK(r3.rms < 6.5);
   CHECK(r3.share_above < 0.5 * j3.share_above);
