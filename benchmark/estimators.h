@@ -110,6 +110,19 @@ inline Estimator rrht(const Rrht_setting& s, const Neighborhood& n)
   return e;
 }
 
+/// RRHT with the defaults of `CGAL::rrht_estimate_normals()` (T_R from eq. 7:
+/// 691, n_rot = 5), named with its neighborhood: "RRHT_defaults_K18".
+inline Estimator rrht_defaults(const Neighborhood& n)
+{
+  Estimator e;
+  e.name = "RRHT_defaults" + n.suffix();
+  e.rotations = 5;
+  e.estimate = [n](Cloud& cloud, unsigned int) {
+    CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(cloud, n.k, sample_maps().neighbor_radius(n.radius));
+  };
+  return e;
+}
+
 /// The bare cost of RRHT's neighborhoods: what `rrht_estimate_normals()`
 /// does besides its Hough transforms. The copy of the cloud, the Hilbert sort
 /// and the kd-tree of `CGAL::RRHT::internal::Neighbor_search`, then the neighborhood of

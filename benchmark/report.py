@@ -116,7 +116,7 @@ TITLES = {
     "real_meshes": "Real meshes (../shared/data/meshes), sampled, the face normal as truth",
     "real_points": "Point sets with given normals (../shared/data/points)",
     "real_scans": "Real scans without normals (../shared/data/scans): time and memory",
-    "targets": "Performance targets (issue 5): 100k-point cube and 1M-point sphere, 0.2% noise",
+    "targets": "Performance targets (issues 5 and 16): 100k-point cube and 1M-point sphere, 0.2% noise; time against k",
     "scaling": "Time against the number of points at the fast setting (sphere, 0.2% noise)",
 }
 
@@ -219,6 +219,32 @@ def targets_table(out, befores=()):
         lines = ["| target | ratio | bound | met |", "|---|---|---|---|"]
         lines += ["| %s | %.3f | %s | %s |" % (r["target"], float(r["ratio"]), r["bound"], r["met"]) for r in rows]
     return "\n".join(lines) + "\n"
+
+
+def plot_time_vs_k(rows, out):
+    """The defaults against k (targets, issue 16): a plot and a table of the
+    median times, with their ratio to k = 100."""
+    times = {}
+    for r in rows:
+        if r["estimator"].startswith("RRHT_defaults_K") and r["status"] == "ok":
+            times[int(r["estimator"][len("RRHT_defaults_K"):])] = r["median_s"]
+    if not times:
+        return [], ""
+    ks = sorted(times)
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    ax.plot(ks, [times[k] for k in ks], marker="o", markersize=3, label="RRHT, defaults (T_R = 691, n_rot = 5)")
+    if 100 in times:
+        ax.axhline(times[100], color="gray", linewidth=0.8, label="k = 100")
+    ax.set_xscale("log")
+    ax.set_xlabel("k (neighbors)")
+    ax.set_ylabel("time (s), 2 threads")
+    ax.set_title("Cube, 100k points, 0.2% noise: time against k")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=7)
+    md = ["\n## Time against k\n", "| k | time (s) | ÷ k = 100 |", "|---|---|---|"]
+    for k in ks:
+        md.append("| %d | %s | %s |" % (k, fmt_time(times[k]), "%.2f" % (times[k] / times[100]) if 100 in times else ""))
+    return [save(fig, os.path.join(out, "time_vs_k.png"))], "\n".join(md) + "\n"
 
 
 def plot_fig7(rows, out):
@@ -439,7 +465,8 @@ def main():
             images = plot_time_vs_points(rows, out, name, "RRHT_Points_c_fast",
                                          "Sphere, 0.2% noise, fast setting (T = 300, n_rot = 2)")
         elif name == "targets":
-            extra = targets_table(out, args.before)
+            images, against_k = plot_time_vs_k(rows, out)
+            extra = targets_table(out, args.before) + against_k
         elif name == "fig7_confidence_interval":
             images, extra = plot_fig7(rows, out)
         elif name == "fig9_noise":

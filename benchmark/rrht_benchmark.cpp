@@ -12,6 +12,7 @@
 
 #include <boost/program_options.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -410,9 +411,25 @@ void scans(const Config& config)
   }
 }
 
-// -- The performance targets (issue 5): each a ratio of two measurements
-// of this run, taken in rounds (times: the median of the ratios round by
-// round), printed at the end and written to targets_ratios.csv.
+// -- The performance targets (issues 5 and 16): each a ratio of two
+// measurements of this run, taken in rounds (times: the median of the
+// ratios round by round), printed at the end and written to
+// targets_ratios.csv.
+
+/// The time of `numerator` over that of `denominator`, measured in the same
+/// rounds (`Experiment::run_in_rounds()`): the median of the ratios of their
+/// runs round by round; 0 if either failed.
+double ratio_by_rounds(const Measurement& numerator, const Measurement& denominator)
+{
+  if(numerator.status != Measurement::OK || denominator.status != Measurement::OK ||
+     numerator.seconds.size() != denominator.seconds.size())
+    return 0;
+  Measurement ratios;
+  for(std::size_t k = 0; k < numerator.seconds.size(); ++k)
+    ratios.seconds.push_back(numerator.seconds[k] / denominator.seconds[k]);
+  return ratios.median();
+}
+
 class Targets
 {
 public:
@@ -426,18 +443,11 @@ public:
     rows_.push_back(Row{ what, valid ? numerator / denominator : 0., target, at_least, valid });
   }
 
-  /// The time of `numerator` over that of `denominator`, measured in the
-  /// same rounds (`Experiment::run_in_rounds()`): the median of the ratios
-  /// of their runs round by round.
+  /// The time of `numerator` over that of `denominator` (`ratio_by_rounds()`).
   void add(const std::string& what, const Measurement& numerator, const Measurement& denominator, double target,
            bool at_least = false)
   {
-    Measurement ratios;
-    const bool valid = numerator.status == Measurement::OK && denominator.status == Measurement::OK &&
-                       numerator.seconds.size() == denominator.seconds.size();
-    for(std::size_t k = 0; valid && k < numerator.seconds.size(); ++k)
-      ratios.seconds.push_back(numerator.seconds[k] / denominator.seconds[k]);
-    add(what, valid ? ratios.median() : 0., 1., target, at_least);
+    add(what, ratio_by_rounds(numerator, denominator), 1., target, at_least);
   }
 
   void print_and_write() const
@@ -491,6 +501,13 @@ void targets(const Config& config)
                                                        { &s, jet80, 2 },
                                                        { &s, fast, 2 },
                                                        { &s, queries, 2 } });
+  // Time against k: the defaults on the cube with 2 threads, k from 6 to 200
+  // (issue 16), in rounds of their own.
+  const std::vector<unsigned int> ks = { 6, 8, 10, 12, 14, 16, 17, 18, 20, 22, 25, 30, 40, 50, 60, 70, 80, 100, 120, 150, 200 };
+  std::vector<Experiment::Planned> against_k;
+  for(unsigned int k : ks)
+    against_k.push_back({ &c, rrht_defaults(Neighborhood{ k, 0 }), 2 });
+  const std::vector<Measurement> by_k = x.run_in_rounds(against_k);
   const Measurement &jet_2 = m[0], &queries_2 = m[1], &fast_1 = m[2], &fast_2 = m[3], &precise_1 = m[4],
                     &precise_2 = m[5], &cubes_2 = m[6], &unif_2 = m[7], &jet_s = m[8], &fast_s = m[9],
                     &queries_s = m[10];
@@ -507,6 +524,14 @@ void targets(const Config& config)
   t.add("sphere 1M, 2 threads: fast / its bare K=100 queries", fast_s, queries_s, 2.5);
   t.add("sphere 1M, 2 threads: fast peak memory / (jet_K80 peak + output)", fast_s.peak_mib,
         jet_s.peak_mib + output_mib, 1);
+  // The slowest k against k = 100, round by round.
+  const std::size_t at_100 = std::size_t(std::find(ks.begin(), ks.end(), 100u) - ks.begin());
+  std::size_t slowest = at_100;
+  for(std::size_t i = 0; i < ks.size(); ++i)
+    if(ratio_by_rounds(by_k[i], by_k[at_100]) > ratio_by_rounds(by_k[slowest], by_k[at_100]))
+      slowest = i;
+  t.add("cube 100k, 2 threads, defaults: slowest k of 6-200 (k = " + std::to_string(ks[slowest]) + ") / k = 100",
+        by_k[slowest], by_k[at_100], 1);
   t.print_and_write();
 }
 

@@ -63,7 +63,7 @@ TEST_CASE("The AVX2 loops give the same planes and triples as the baseline ones,
     }
   }
   CHECK(compared > 20000);
-  for(std::uint32_t n : { 5u, 20u, 101u, 4096u })
+  for(std::uint32_t n : { 5u, 20u, 30u, 101u, 4096u }) // listed, bitmap, filter; C(20,3) = 1140, C(30,3) = 4060
   {
     Points_sampler baseline_sampler(Instruction_set::baseline), avx2_sampler(Instruction_set::avx2);
     baseline_sampler.prepare(n, 300);

@@ -21,6 +21,15 @@ TEST_CASE("Random streams depend only on the seed and the stream number", "[rand
   CHECK(x == b());
   CHECK(x != c());
   CHECK(x != d());
+  // discard(n) moves the stream as n draws do.
+  for(std::uint64_t n : { 0u, 1u, 63u, 1000u })
+  {
+    Random drawn(5, 9), discarded(5, 9);
+    for(std::uint64_t i = 0; i < n; ++i)
+      drawn();
+    discarded.discard(n);
+    CHECK(drawn() == discarded());
+  }
   // Uniform indices are unbiased and in range.
   Random rng(1, 2);
   std::vector<int> counts(7, 0);

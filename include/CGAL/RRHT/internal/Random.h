@@ -45,6 +45,10 @@ public:
     return mix(m_state);
   }
 
+  /// Moves the stream past its next `count` numbers, as if drawn (as the
+  /// standard engines' `discard()`).
+  void discard(std::uint64_t count) { m_state += count * golden_gamma; }
+
   /// Uniform integer in [0, n), n > 0, without bias (Lemire 2019, "Fast
   /// random integer generation in an interval": one multiplication instead
   /// of a division in the common case).
