@@ -15,6 +15,7 @@ import argparse
 import csv
 import math
 import os
+import re
 from collections import OrderedDict, defaultdict
 
 import matplotlib
@@ -203,15 +204,20 @@ def targets_table(out, befores=()):
     rows = read_ratios(out)
     if not rows:
         return ""
+    # The row of time against k names its slowest k, which differs from run
+    # to run: rows are matched without it.
+    def key(target):
+        return re.sub(r" \(k = \d+\)", "", target)
+
     if befores:
-        olds = [{r["target"]: r for r in read_ratios(b)} for b in befores]
+        olds = [{key(r["target"]): r for r in read_ratios(b)} for b in befores]
         names = [os.path.basename(os.path.normpath(d)) for d in list(befores) + [out]]
         lines = ["| target | bound | " + " | ".join("%s | met" % n for n in names) + " |",
                  "|---|---|" + "---|---|" * len(names)]
         for r in rows:
             cells = []
             for old in olds:
-                b = old.get(r["target"])
+                b = old.get(key(r["target"]))
                 cells += ["%.3f" % float(b["ratio"]) if b else "", b["met"] if b else ""]
             cells += ["%.3f" % float(r["ratio"]), r["met"]]
             lines.append("| %s | %s | %s |" % (r["target"], r["bound"], " | ".join(cells)))
