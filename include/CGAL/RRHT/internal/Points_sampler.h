@@ -56,6 +56,8 @@ public:
     : m_instruction_set(instruction_set)
   {}
 
+  /// Prepares the runs on a neighborhood of `n` points, each of at most
+  /// `max_draws` triples.
   void prepare(std::uint32_t n, std::size_t max_draws)
   {
     m_n = n;
