@@ -527,9 +527,16 @@ void targets(const Config& config)
   // The slowest k against k = 100, round by round.
   const std::size_t at_100 = std::size_t(std::find(ks.begin(), ks.end(), 100u) - ks.begin());
   std::size_t slowest = at_100;
+  double slowest_ratio = ratio_by_rounds(by_k[at_100], by_k[at_100]);
   for(std::size_t i = 0; i < ks.size(); ++i)
-    if(ratio_by_rounds(by_k[i], by_k[at_100]) > ratio_by_rounds(by_k[slowest], by_k[at_100]))
+  {
+    const double ratio = ratio_by_rounds(by_k[i], by_k[at_100]);
+    if(ratio > slowest_ratio)
+    {
       slowest = i;
+      slowest_ratio = ratio;
+    }
+  }
   t.add("cube 100k, 2 threads, defaults: slowest k of 6-200 (k = " + std::to_string(ks[slowest]) + ") / k = 100",
         by_k[slowest], by_k[at_100], 1);
   t.print_and_write();

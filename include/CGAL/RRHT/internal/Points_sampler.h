@@ -259,9 +259,10 @@ private:
     return std::uint64_t(t[0]) | (std::uint64_t(t[1]) << 21) | (std::uint64_t(t[2]) << 42);
   }
 
-  // The exact triple when indices fit in 21 bits, else a 64-bit mix of it: two draws of one triple always have the same key, so a repeat is
-  // never let through (a rare collision of two different triples only costs
-  // a redraw).
+  // The exact triple when indices fit in 21 bits, else a 64-bit mix of it:
+  // two draws of one triple always have the same key, so a repeat is never
+  // let through (a rare collision of two different triples only costs a
+  // redraw).
   static std::uint64_t key(const Triple& t)
   {
     if(t[2] < (1u << 21))
