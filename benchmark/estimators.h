@@ -3,7 +3,8 @@
 //
 // The normal estimators the benchmark compares, each behind the same
 // `Estimate` signature: RRHT (this package), CGAL's jet fitting, PCA and
-// VCM, and PCL's NormalEstimationOMP when PCL was found at configure time.
+// VCM, and PCL's NormalEstimationOMP and Open3D's EstimateNormals when they
+// were found at configure time.
 
 #ifndef CGAL_RRHT_BENCHMARK_ESTIMATORS_H
 #define CGAL_RRHT_BENCHMARK_ESTIMATORS_H
@@ -234,6 +235,38 @@ inline Estimator pcl(const Neighborhood& n)
   Estimator e;
   e.name = "pcl" + n.suffix();
   e.estimate = [n](Cloud& cloud, unsigned int threads) { pcl_estimate_normals(cloud, n.k, n.radius, threads); };
+  return e;
+}
+#endif
+
+#ifdef RRHT_BENCHMARK_WITH_OPEN3D
+/// open3d::geometry::PointCloud::EstimateNormals with the `k` nearest points,
+/// or at most `k` points within `radius` if `radius > 0` (open3d_peer.cpp).
+void open3d_estimate_normals(Cloud& cloud, unsigned int k, double radius, unsigned int threads);
+
+/// Open3D with KDTreeSearchParamKNN(k): "open3d_K30" at its documented default.
+inline Estimator open3d(const Neighborhood& n)
+{
+  Estimator e;
+  e.name = "open3d" + n.suffix();
+  e.estimate = [n](Cloud& cloud, unsigned int threads) { open3d_estimate_normals(cloud, n.k, 0, threads); };
+  return e;
+}
+
+/// Open3D with KDTreeSearchParamHybrid(radius, max_nn = k): "open3d_hybrid".
+/// The radius is 3 times CGAL's average spacing (6 neighbors), computed
+/// inside the timed call.
+inline Estimator open3d_hybrid(const Neighborhood& n)
+{
+  Estimator e;
+  e.name = "open3d_hybrid";
+  e.estimate = [n](Cloud& cloud, unsigned int threads) {
+    // On a uniformly sampled surface this ball holds about 30 points (= max_nn): the
+    // radius only bounds the neighborhood where the cloud is sparser than on average.
+    const double radius = 3 * CGAL::compute_average_spacing<CGAL::Parallel_if_available_tag>(
+                                cloud, 6, CGAL::parameters::point_map(Point_of_sample()));
+    open3d_estimate_normals(cloud, n.k, radius, threads);
+  };
   return e;
 }
 #endif

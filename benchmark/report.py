@@ -107,7 +107,7 @@ def table(rows, with_errors=True):
 
 
 TITLES = {
-    "headline": "Headline: RRHT against jet fitting, PCA, VCM (and PCL) on shapes with sharp edges",
+    "headline": "Headline: RRHT against jet fitting, PCA, VCM (and PCL, Open3D) on shapes with sharp edges",
     "fig6_time_vs_points": "Fig. 6: time against the number of points (sphere, 0.2% noise, no confidence interval)",
     "fig7_confidence_interval": "Fig. 7: effect of the confidence-interval stop (eq. 10) against noise",
     "fig9_noise": "Fig. 9: error against noise on the closed cylinder",
@@ -122,7 +122,8 @@ TITLES = {
 }
 
 COLORS = {"Points": "tab:blue", "Cubes": "tab:orange", "Unif": "tab:green", "jet_K80": "black",
-          "jet_K18": "dimgray", "pca_K80": "tab:purple", "vcm": "tab:brown", "pcl_K80": "tab:pink"}
+          "jet_K18": "dimgray", "pca_K80": "tab:purple", "vcm": "tab:brown", "pcl_K80": "tab:pink",
+          "open3d_K30": "tab:olive", "open3d_hybrid": "tab:cyan"}
 STYLES = {"m": "--", "b": ":", "c": "-"}
 
 

@@ -2,9 +2,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The comparison benchmark: RRHT against CGAL's jet fitting, PCA and VCM
-// (and PCL when found) on the experiments of the paper's Section 6 and on
-// real data. Writes one CSV per experiment; benchmark/report.py turns them
-// into Markdown tables, plots and renderings. See benchmark/README.md.
+// (and PCL and Open3D when found) on the experiments of the paper's
+// Section 6 and on real data. Writes one CSV per experiment;
+// benchmark/report.py turns them into Markdown tables, plots and renderings.
+// See benchmark/README.md.
 
 #include "datasets.h"
 #include "estimators.h"
@@ -45,8 +46,9 @@ struct Config
 
 // The neighborhoods of Section 6: K = 100 for RRHT (Table 1; the paper's
 // K = 500 on synthetic data is 5x the cost for the same conclusions), K = 80
-// for jet fitting, PCA and VCM as in the paper, and CGAL's usual K = 18.
-const Neighborhood rrht_k{ 100, 0 }, paper_k{ 80, 0 }, small_k{ 18, 0 };
+// for jet fitting, PCA and VCM as in the paper, CGAL's usual K = 18, and
+// Open3D's documented default K = 30.
+const Neighborhood rrht_k{ 100, 0 }, paper_k{ 80, 0 }, small_k{ 18, 0 }, open3d_k{ 30, 0 };
 
 /// One experiment: its CSV file and how it runs an estimator on a dataset.
 class Experiment
@@ -150,13 +152,18 @@ private:
   std::ofstream csv_;
 };
 
-/// jet fitting (K = 80 and CGAL's usual K = 18), PCA and VCM (K = 80), and
-/// PCL (K = 80) when built with it.
+/// jet fitting (K = 80 and CGAL's usual K = 18), PCA and VCM (K = 80), PCL
+/// (K = 80) and Open3D (K = 30, and at most 30 within a radius) when built
+/// with them.
 std::vector<Estimator> peers()
 {
   std::vector<Estimator> p = { jet(paper_k), jet(small_k), pca(paper_k), vcm(paper_k) };
 #ifdef RRHT_BENCHMARK_WITH_PCL
   p.push_back(pcl(paper_k));
+#endif
+#ifdef RRHT_BENCHMARK_WITH_OPEN3D
+  p.push_back(open3d(open3d_k));
+  p.push_back(open3d_hybrid(open3d_k));
 #endif
   return p;
 }
@@ -590,7 +597,7 @@ std::vector<unsigned int> parse_threads(const std::string& list)
 
 int main(int argc, char** argv)
 {
-  po::options_description options("rrht_benchmark: RRHT against jet fitting, PCA, VCM (and PCL)\nOptions");
+  po::options_description options("rrht_benchmark: RRHT against jet fitting, PCA, VCM (and PCL, Open3D)\nOptions");
   options.add_options()
     ("help,h", "this help")
     ("mode", po::value<std::string>()->default_value("quick"), "quick (a few minutes) or full")

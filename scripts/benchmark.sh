@@ -7,8 +7,9 @@
 #
 # RRHT_BENCHMARK_RESULTS=NAME writes to benchmark/results/NAME instead.
 #
-# quick takes minutes, full hours. PCL is compared too when Debian's
-# libpcl-dev is installed (RRHT_BENCHMARK_PCL=1 installs it).
+# quick takes minutes, full hours. PCL and Open3D are compared too when
+# Debian's libpcl-dev and libopen3d-dev are installed (RRHT_BENCHMARK_PCL=1
+# and RRHT_BENCHMARK_OPEN3D=1 install them).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 mode=${1:-quick}
@@ -17,6 +18,7 @@ case "$mode" in quick|full) ;; *) echo "usage: $0 [quick|full] [rrht_benchmark o
 
 extra=(python3-matplotlib)
 [ "${RRHT_BENCHMARK_PCL:-0}" = 1 ] && extra+=(libpcl-dev)
+[ "${RRHT_BENCHMARK_OPEN3D:-0}" = 1 ] && extra+=(libopen3d-dev)
 bash "$root/scripts/install_dependencies.sh" "${extra[@]}"
 
 build="$root/build/benchmark"
@@ -34,7 +36,8 @@ mkdir -p "$out" "$scratch"
   echo "Command: \`${RRHT_BENCHMARK_RESULTS:+RRHT_BENCHMARK_RESULTS=$results }bash scripts/benchmark.sh $mode${*:+ $*}\` at commit $commit, $(date -u '+%Y-%m-%d %H:%M UTC')."
   echo "Machine: $(lscpu | sed -n 's/^Model name: *//p' | head -1), $(nproc) cores, $(free -g | awk '/^Mem:/ {print $2}') GiB;" \
        "$(g++ --version | head -1); CGAL $(dpkg-query -W -f='${Version}' libcgal-dev);" \
-       "PCL: $(dpkg-query -W -f='${Version}' libpcl-dev 2>/dev/null || echo 'not installed')."
+       "PCL: $(dpkg-query -W -f='${Version}' libpcl-dev 2>/dev/null || echo 'not installed');" \
+       "Open3D: $(dpkg-query -W -f='${Version}' libopen3d-dev 2>/dev/null || echo 'not installed')."
 } > "$out/machine.txt"
 "$build/benchmark/rrht_benchmark" --mode "$mode" --out "$out" --scratch "$scratch" \
     --data "$root/../shared/data" "$@" | tee "$build/benchmark-${results//\//-}.log"

@@ -1,8 +1,17 @@
 #!/usr/bin/env bash
 # Installs, from Debian's packages, whatever the build needs and is missing,
-# and the further packages given as arguments.
+# and the further packages given as arguments; --python adds what the Python
+# package needs to build (pip install --no-build-isolation .), run and test.
 set -euo pipefail
-packages=(g++ make cmake libcgal-dev libeigen3-dev libboost-dev libboost-program-options-dev libtbb-dev catch2 "$@")
+packages=(g++ make cmake libcgal-dev libeigen3-dev libboost-dev libboost-program-options-dev libtbb-dev catch2)
+for argument in "$@"; do
+  if [ "$argument" = --python ]; then
+    packages+=(python3-dev python3-venv python3-pip python3-setuptools python3-wheel python3-numpy
+               python3-pybind11 pybind11-dev python3-tqdm python3-open3d python3-pytest)
+  else
+    packages+=("$argument")
+  fi
+done
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

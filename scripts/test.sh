@@ -1,7 +1,11 @@
 #!/usr/bin/env bash
 # The tests: installs what is missing, then
 #  1. builds in Release against the system's CGAL (with a smoke run of the
-#     benchmark) and runs the whole suite with ctest;
+#     benchmark and the Python module) and runs the whole suite with ctest,
+#     the Python tests (pytest) included;
+#  1b. installs the Python package as a user does (pip install
+#     --no-build-isolation . in a virtual environment on Debian's Python
+#     packages, without network) and runs the Python tests on it;
 #  2. builds again with AddressSanitizer and UndefinedBehaviorSanitizer and
 #     runs it once more (RRHT_SANITIZE=0 skips this pass);
 #  3. builds in Release and runs the suite against each CGAL release of
@@ -15,10 +19,13 @@
 # Every build fails on a compiler warning.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-extra_packages=(doxygen)
+extra_packages=(--python doxygen)
 [ "${RRHT_CLANG:-1}" != "0" ] && extra_packages+=(clang)
 bash "$root/scripts/install_dependencies.sh" "${extra_packages[@]}"
 jobs=$(nproc)
+# Debian's Python, the one its python3-* packages are for (not a pyenv's).
+python=/usr/bin/python3
+[ -x "$python" ] || python=$(command -v python3)
 
 run_suite() { # build folder, extra cmake arguments...
   local build=$1; shift
@@ -52,8 +59,18 @@ same_normals() { # build, reference build
   echo "same normals, bit for bit, as $2 (${#runs[@]} settings of rrht_normals on fandisk_20k.xyz)"
 }
 
-echo "== Release build and tests (system CGAL)"
-run_suite "$root/build/release" -DCMAKE_BUILD_TYPE=Release -DCGAL_RRHT_BUILD_BENCHMARKS=ON
+echo "== Release build and tests (system CGAL), the Python module's included"
+run_suite "$root/build/release" -DCMAKE_BUILD_TYPE=Release -DCGAL_RRHT_BUILD_BENCHMARKS=ON \
+          -DCGAL_RRHT_BUILD_PYTHON=ON -DPython_EXECUTABLE="$python"
+
+echo "== The Python package installed by pip in a virtual environment, and its tests"
+venv=$root/build/venv
+rm -rf "$venv"
+"$python" -m venv --system-site-packages "$venv"
+"$venv/bin/pip" install --no-build-isolation --no-index --quiet "$root"
+(cd "$root/build" && "$venv/bin/python" -c "import cgal_rrht; print('testing', cgal_rrht.__file__)" &&
+   CGAL_RRHT_CLI="$root/build/release/examples/rrht_normals" \
+   "$venv/bin/python" -m pytest -q -rs -p no:cacheprovider "$root/python/tests")
 
 if [ "${RRHT_SANITIZE:-1}" != "0" ]; then
   echo "== AddressSanitizer + UndefinedBehaviorSanitizer build and tests"

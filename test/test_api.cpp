@@ -16,6 +16,7 @@
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
+#include <tbb/task_arena.h>
 #endif
 
 #include <atomic>
@@ -307,9 +308,9 @@ TEST_CASE("Same seed, same normals, bit for bit, whatever the concurrency and th
 
 TEST_CASE("The callback reports progress, and returning false stops, leaving the rest unchanged", "[api][callback]")
 {
-  const rrht_test::Cloud truth = noisy_cube(5000);
+  const rrht_test::Cloud truth = noisy_cube(5000), large = noisy_cube(200000);
   const SC::Vector_3 untouched(7, 7, 7);
-  auto check_tag = [&](auto tag) {
+  auto check_tag = [&](auto tag, std::size_t threads) {
     typedef decltype(tag) Tag;
     // A full run: advancement in [0, 1], ending with 1.
     {
@@ -327,13 +328,15 @@ TEST_CASE("The callback reports progress, and returning false stops, leaving the
       for(double a : seen)
         CHECK((a >= 0 && a <= 1));
     }
-    // Interrupted at the first report.
+    // Interrupted at the first report, on a cloud large enough for TBB's
+    // default partitioner to hand out ranges of thousands of points.
     {
-      Pair_cloud<SC> cloud = to_pairs<SC>(truth);
+      Pair_cloud<SC> cloud = to_pairs<SC>(large);
       for(auto& pn : cloud)
         pn.second = untouched;
       std::function<bool(double)> stop = [](double) { return false; };
-      CGAL::rrht_estimate_normals<Tag>(cloud, 30, params::extend(pair_maps<SC>).callback(stop));
+      CGAL::rrht_estimate_normals<Tag>(
+        cloud, 10, params::extend(pair_maps<SC>).callback(stop).number_of_planes(10).number_of_rotations(1));
       std::size_t estimated = 0, unchanged = 0;
       for(const auto& pn : cloud)
       {
@@ -346,12 +349,15 @@ TEST_CASE("The callback reports progress, and returning false stops, leaving the
         }
       }
       CHECK(estimated > 0);
-      CHECK(unchanged > cloud.size() / 2);
+      // Each thread stops after the block of at most 64 points it was on, and
+      // may have started one more before the first report.
+      CHECK(estimated <= 2 * 64 * threads);
+      CHECK(estimated + unchanged == cloud.size());
     }
   };
-  check_tag(CGAL::Sequential_tag());
+  check_tag(CGAL::Sequential_tag(), 1);
 #ifdef CGAL_LINKED_WITH_TBB
-  check_tag(CGAL::Parallel_tag());
+  check_tag(CGAL::Parallel_tag(), std::size_t(tbb::this_task_arena::max_concurrency()));
 #endif
 }
 

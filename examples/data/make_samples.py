@@ -7,8 +7,13 @@ writes NAME.xyz (x y z) and NAME_truth.xyz (x y z nx ny nz, the normal of the
 face each point lies on) next to this script. The bundled files come from
     python3 make_samples.py ../../../shared/data/meshes/fandisk.off fandisk_20k 20000 2012
     python3 make_samples.py ../../../shared/data/meshes/anchor_dense.off anchor_15k 15000 2013
+
+    python3 make_samples.py --ply NAME
+
+writes NAME_truth.xyz again as NAME.ply (binary PLY: the same points and
+normals, as doubles); fandisk_20k.ply comes from `--ply fandisk_20k`.
 """
-import bisect, math, os, random, sys
+import bisect, math, os, random, struct, sys
 
 def read_off(path):
     words = open(path).read().split()
@@ -27,7 +32,19 @@ def read_off(path):
 def sub(a, b): return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
 def cross(a, b): return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
 
+def write_ply(name):
+    here = os.path.dirname(os.path.abspath(__file__))
+    rows = [tuple(map(float, line.split())) for line in open(os.path.join(here, name + "_truth.xyz"))]
+    header = ["ply", "format binary_little_endian 1.0", "element vertex %d" % len(rows)]
+    header += ["property double %s" % p for p in ("x", "y", "z", "nx", "ny", "nz")] + ["end_header", ""]
+    with open(os.path.join(here, name + ".ply"), "wb") as ply:
+        ply.write("\n".join(header).encode("ascii"))
+        for row in rows:
+            ply.write(struct.pack("<6d", *row))
+
 def main():
+    if sys.argv[1] == "--ply":
+        return write_ply(sys.argv[2])
     vertices, faces = read_off(sys.argv[1])
     triangles, cumulated, total = [], [], 0.0
     for f in faces:

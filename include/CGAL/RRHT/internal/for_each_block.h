@@ -31,7 +31,17 @@ namespace internal {
 template <typename ConcurrencyTag, typename MakeScratch, typename Process>
 void for_each_block(std::size_t size, Progress& progress, MakeScratch make_scratch, Process process)
 {
+  // Progress is reported, and an interruption seen, after every block of 64
+  // points, however large the ranges that TBB hands to a thread.
   const std::size_t block = 64;
+  auto blocks = [&](std::size_t begin, std::size_t end, auto& scratch) {
+    for(; begin < end && !progress.interrupted(); begin += block)
+    {
+      const std::size_t block_end = (std::min)(end, begin + block);
+      process(begin, block_end, scratch);
+      progress.add(block_end - begin);
+    }
+  };
 #ifdef CGAL_LINKED_WITH_TBB
   if(std::is_convertible<ConcurrencyTag, Parallel_tag>::value)
   {
@@ -39,21 +49,13 @@ void for_each_block(std::size_t size, Progress& progress, MakeScratch make_scrat
     tbb::enumerable_thread_specific<Scratch_type> scratches(make_scratch);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, size, block),
                       [&](const tbb::blocked_range<std::size_t>& range) {
-                        if(progress.interrupted())
-                          return;
-                        process(range.begin(), range.end(), scratches.local());
-                        progress.add(range.size());
+                        blocks(range.begin(), range.end(), scratches.local());
                       });
     return;
   }
 #endif
   auto scratch = make_scratch();
-  for(std::size_t begin = 0; begin < size && !progress.interrupted(); begin += block)
-  {
-    const std::size_t end = (std::min)(size, begin + block);
-    process(begin, end, scratch);
-    progress.add(end - begin);
-  }
+  blocks(0, size, scratch);
 }
 
 } // namespace internal

@@ -1,0 +1,192 @@
+# Copyright (c) 2026 The CGAL RRHT authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Normal estimation that keeps sharp features, on NumPy arrays.
+
+``cgal_rrht.estimate_normals(points)`` runs ``CGAL::rrht_estimate_normals()``,
+the Robust Randomized Hough Transform of A. Boulch and R. Marlet, "Fast and
+Robust Normal Estimation for Point Clouds with Sharp Features", Computer
+Graphics Forum 31(5), 2012. ``cgal_rrht.open3d.estimate_normals(pcd)`` fills
+the normals of an Open3D point cloud.
+"""
+
+from __future__ import annotations
+
+from typing import Optional
+
+import numpy as np
+import numpy.typing as npt
+
+from . import _core
+
+__all__ = ["estimate_normals", "SAMPLINGS", "AGGREGATIONS"]
+__version__ = "0.1.0"
+
+#: The values of ``sampling``: RRHT_Points, RRHT_Cubes, RRHT_Unif (paper, Section 5).
+SAMPLINGS = ("points", "cubes", "unif")
+#: The values of ``aggregation``: RRHT_m, RRHT_b, RRHT_c (paper, Section 4).
+AGGREGATIONS = ("mean", "best", "cluster")
+
+
+def estimate_normals(
+    points: npt.ArrayLike,
+    k: int = 100,
+    *,
+    radius: Optional[float] = None,
+    planes: Optional[int] = None,
+    rotations: int = 5,
+    slices: int = 15,
+    confidence_interval: bool = True,
+    sampling: str = "points",
+    presampling: int = 4,
+    aggregation: str = "cluster",
+    cluster_angle: float = 45.0,
+    seed: int = 0,
+    threads: Optional[int] = None,
+    progress: bool = False,
+) -> npt.NDArray[np.float64]:
+    """Estimates the normals of a point cloud, keeping sharp features.
+
+    For each point, planes through random triples of its neighbors vote in a
+    Hough accumulator of directions; the normal is the mean normal of the
+    most voted bin, so that near an edge the plane of the point's own side
+    wins. This is done in ``rotations`` randomly rotated accumulators, whose
+    normals are combined by ``aggregation``. The defaults are those of
+    ``CGAL::rrht_estimate_normals()``; the paper's names are in brackets.
+
+    Parameters
+    ----------
+    points : array_like, shape (N, 3), float64 or float32
+        The points. A C-contiguous float64 array is read in place, without a
+        copy; other arrays are converted to one first. Points with a NaN or
+        infinite coordinate get a zero normal and are nobody's neighbor.
+    k : int, default 100
+        The number of neighbors [K]: a point's neighborhood is the point and
+        its ``k`` nearest neighbors. With ``radius``, the cap on the number
+        of neighbors taken from the ball (0: no cap).
+    radius : float, optional
+        The radius of a spherical neighborhood [r]; default: none (``k``
+        nearest neighbors). A ball with more than ``k`` other points keeps
+        its ``k`` nearest (unless ``k`` is 0); one with fewer than 3 points
+        is replaced by the ``k`` (at least 3) nearest neighbors.
+    planes : int, optional
+        The largest number of triples drawn per accumulator [T_R], from 1 to
+        100 000 000; default: the Hoeffding bound of eq. 7 for the
+        accumulator's number of bins (691 with 15 slices).
+    rotations : int, default 5
+        The number of randomly rotated accumulators [n_rot], 1 to 100 000.
+    slices : int, default 15
+        The number of slices of the sphere in the accumulator [n_phi], 1 to
+        1000.
+    confidence_interval : bool, default True
+        Stop drawing triples as soon as the 95% confidence intervals of the
+        two most voted bins are disjoint (eq. 10).
+    sampling : {"points", "cubes", "unif"}, default "points"
+        How triples are drawn: uniformly among the neighbors [RRHT_Points],
+        or spatially uniformly in the neighborhood ball [RRHT_Cubes,
+        RRHT_Unif], which resists density variations at some cost in time.
+    presampling : int, default 4
+        The discretization of the ball for "cubes" (c^3 cubes) and "unif"
+        (balls of radius r/c) [c], 1 to 32.
+    aggregation : {"mean", "best", "cluster"}, default "cluster"
+        How the normals of the rotated accumulators are combined [RRHT_m,
+        RRHT_b, RRHT_c].
+    cluster_angle : float, default 45.0
+        The angle in degrees within which normals form a cluster
+        [a_cluster], 0 to 180.
+    seed : int, default 0
+        The seed of the random draws, 0 to 2**32 - 1. Each point draws from
+        its own stream, derived from the seed and its row: the same input and
+        seed give the same normals, bit for bit, as ``rrht_normals`` and
+        ``CGAL::rrht_estimate_normals()``, whatever the number of threads.
+    threads : int, optional
+        The number of threads for this call, 1 to 1024; default: all cores.
+    progress : bool, default False
+        Show a progress bar (tqdm) on stderr.
+
+    Returns
+    -------
+    numpy.ndarray, shape (N, 3), float64
+        Unit normals, not oriented (``open3d``'s
+        ``orient_normals_consistent_tangent_plane`` or CGAL's
+        ``mst_orient_normals`` orient them); the zero vector where no plane
+        can be formed (fewer than 3 distinct or only collinear neighbors, a
+        non-finite point).
+
+    Raises
+    ------
+    TypeError
+        If ``points`` is an array of another dtype than float64 or float32.
+    ValueError
+        If ``points`` is not of shape (N, 3), if a parameter is out of its
+        range (with the message of ``CGAL::rrht_estimate_normals()``), or if
+        ``sampling`` or ``aggregation`` is an unknown name.
+    KeyboardInterrupt
+        On Ctrl-C, which stops the estimation within a fraction of a second.
+
+    Notes
+    -----
+    The GIL is released during the estimation: other Python threads run
+    meanwhile.
+
+    Examples
+    --------
+    >>> import numpy as np, cgal_rrht
+    >>> points = np.random.default_rng(0).random((1000, 3)) * [1, 1, 0]
+    >>> normals = cgal_rrht.estimate_normals(points, k=30)
+    >>> bool(np.allclose(np.abs(normals[:, 2]), 1))
+    True
+    """
+    if isinstance(points, np.ndarray):
+        if points.dtype not in (np.float64, np.float32):
+            raise TypeError(
+                f"points must be float64 or float32, not {points.dtype}: convert them with points.astype(np.float64)"
+            )
+        array = np.ascontiguousarray(points, dtype=np.float64)
+    else:
+        array = np.asarray(points, dtype=np.float64)
+    if array.ndim != 2 or array.shape[1] != 3:
+        raise ValueError(f"points must have the shape (N, 3), not {array.shape}")
+    arguments = dict(
+        k=_integer(k, "k"),
+        radius=None if radius is None else float(radius),
+        planes=None if planes is None else _integer(planes, "planes"),
+        rotations=_integer(rotations, "rotations"),
+        slices=_integer(slices, "slices"),
+        confidence_interval=bool(confidence_interval),
+        sampling=_name(sampling, SAMPLINGS, "sampling"),
+        presampling=_integer(presampling, "presampling"),
+        aggregation=_name(aggregation, AGGREGATIONS, "aggregation"),
+        cluster_angle=float(cluster_angle),
+        seed=_integer(seed, "seed"),
+        threads=None if threads is None else _integer(threads, "threads"),
+    )
+    if not progress:
+        return _core.estimate_normals(array, progress=None, **arguments)
+    try:
+        from tqdm.auto import tqdm
+    except ImportError as error:
+        raise ImportError("progress=True needs tqdm (pip install tqdm; Debian: python3-tqdm)") from error
+
+    with tqdm(total=len(array), unit="pt", desc="cgal_rrht", unit_scale=True) as bar:
+
+        def advance(done: float) -> None:
+            bar.update(int(done * len(array)) - bar.n)
+
+        normals = _core.estimate_normals(array, progress=advance, **arguments)
+        advance(1.0)
+    return normals
+
+
+def _integer(value: object, name: str) -> int:
+    """``value`` (a Python or NumPy integer) as an int; its range is checked by the C++ side."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+        raise TypeError(f"{name} must be an integer, not {type(value).__name__}")
+    if not -(2**63) <= value < 2**63:
+        raise ValueError(f"{name} is out of range: {value}")
+    return int(value)
+
+
+def _name(value: object, valid: tuple, name: str) -> str:
+    if value not in valid:
+        raise ValueError(f"unknown {name} {value!r}: use one of {', '.join(map(repr, valid))}")
+    return str(value)

@@ -1,0 +1,22 @@
+# Type stub of the compiled module (python/src/core.cpp).
+from typing import Callable, Optional
+
+import numpy as np
+import numpy.typing as npt
+
+def estimate_normals(
+    points: npt.NDArray[np.float64],
+    k: int,
+    radius: Optional[float],
+    planes: Optional[int],
+    rotations: int,
+    slices: int,
+    confidence_interval: bool,
+    sampling: str,
+    presampling: int,
+    aggregation: str,
+    cluster_angle: float,
+    seed: int,
+    threads: Optional[int],
+    progress: Optional[Callable[[float], None]],
+) -> npt.NDArray[np.float64]: ...

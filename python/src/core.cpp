@@ -1,0 +1,256 @@
+// Copyright (c) 2026 The CGAL RRHT authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// cgal_rrht._core: CGAL::rrht_estimate_normals() on NumPy arrays. The
+// documented Python API is cgal_rrht.estimate_normals() (cgal_rrht/__init__.py),
+// which checks the array and calls estimate_normals() below.
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/rrht_estimate_normals.h>
+
+#include <pybind11/functional.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <boost/iterator/counting_iterator.hpp>
+#include <boost/property_map/property_map.hpp>
+#include <boost/range/iterator_range.hpp>
+
+#include <tbb/task_arena.h>
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstddef>
+#include <cstdint>
+#include <exception>
+#include <functional>
+#include <limits>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <thread>
+
+namespace py = pybind11;
+
+namespace {
+
+typedef CGAL::Simple_cartesian<double> Kernel;
+// The points are the row indices of the array, read and written in place.
+typedef boost::iterator_range<boost::counting_iterator<std::size_t>> Rows;
+
+/// Row i of a C-contiguous (N, 3) array of doubles, as a point.
+struct Row_point_map
+{
+  typedef std::size_t key_type;
+  typedef Kernel::Point_3 value_type;
+  typedef value_type reference;
+  typedef boost::readable_property_map_tag category;
+  const double* data;
+
+  friend value_type get(const Row_point_map& map, std::size_t i)
+  {
+    const double* row = map.data + 3 * i;
+    return value_type(row[0], row[1], row[2]);
+  }
+};
+
+/// Row i of a C-contiguous (N, 3) array of doubles, written as a normal.
+struct Row_normal_map
+{
+  typedef std::size_t key_type;
+  typedef Kernel::Vector_3 value_type;
+  typedef value_type reference;
+  typedef boost::writable_property_map_tag category;
+  double* data;
+
+  friend void put(const Row_normal_map& map, std::size_t i, const value_type& n)
+  {
+    double* row = map.data + 3 * i;
+    row[0] = n.x();
+    row[1] = n.y();
+    row[2] = n.z();
+  }
+};
+
+template <typename Enum>
+Enum from_name(const std::string& name, const std::map<std::string, Enum>& names, const char* what)
+{
+  const auto found = names.find(name);
+  if(found != names.end())
+    return found->second;
+  std::string valid;
+  for(const auto& entry : names)
+    valid += (valid.empty() ? "'" : ", '") + entry.first + "'";
+  throw py::value_error("unknown " + std::string(what) + " '" + name + "': use one of " + valid);
+}
+
+/// A count given from Python (any integer) as the C++ type, or a ValueError.
+template <typename Count>
+Count count(long long value, const char* what)
+{
+  if(value < 0 || static_cast<unsigned long long>(value) > std::numeric_limits<Count>::max())
+    throw py::value_error(std::string(what) + " must be from 0 to " + std::to_string(std::numeric_limits<Count>::max()) +
+                          ", got " + std::to_string(value));
+  return static_cast<Count>(value);
+}
+
+struct Options
+{
+  unsigned int k;
+  double radius; // 0: k nearest neighbors
+  std::optional<long long> planes; // none: the Hoeffding bound of the accumulator
+  long long rotations, slices, presampling;
+  bool confidence_interval;
+  CGAL::RRHT::Sampling sampling;
+  CGAL::RRHT::Aggregation aggregation;
+  double cluster_angle;
+  unsigned int seed;
+  int threads; // 0: TBB's default, all cores
+};
+
+/// Runs the estimation on a thread of its own, without the GIL, while the
+/// calling thread checks for Ctrl-C (Python handles signals only there) and
+/// reports progress every `poll`: the run stops within one block of points.
+void run_interruptibly(const std::function<void(const std::function<bool(double)>&)>& estimate,
+                       const std::function<void(double)>& progress)
+{
+  const auto poll = std::chrono::milliseconds(100);
+  std::atomic<double> done(0.);
+  std::atomic<bool> stop(false);
+  std::mutex mutex;
+  std::condition_variable finished_cv;
+  bool finished = false;
+  std::exception_ptr cpp_error, python_error;
+  {
+    py::gil_scoped_release no_gil;
+    std::thread worker([&]() {
+      try
+      {
+        estimate([&](double advancement) {
+          done = advancement;
+          return !stop.load();
+        });
+      }
+      catch(...)
+      {
+        cpp_error = std::current_exception();
+      }
+      std::lock_guard<std::mutex> lock(mutex);
+      finished = true;
+      finished_cv.notify_one();
+    });
+    for(;;)
+    {
+      {
+        std::unique_lock<std::mutex> lock(mutex);
+        if(finished_cv.wait_for(lock, poll, [&]() { return finished; }))
+          break;
+      }
+      py::gil_scoped_acquire gil;
+      try
+      {
+        if(PyErr_CheckSignals() != 0)
+          throw py::error_already_set();
+        if(progress)
+          progress(done.load());
+      }
+      catch(...)
+      {
+        python_error = std::current_exception();
+        stop = true;
+        break;
+      }
+    }
+    worker.join();
+  }
+  if(python_error)
+    std::rethrow_exception(python_error);
+  if(cpp_error)
+    std::rethrow_exception(cpp_error);
+}
+
+py::array_t<double> estimate_normals(const py::array_t<double, py::array::c_style>& points, const Options& options,
+                                     const std::function<void(double)>& progress)
+{
+  if(points.ndim() != 2 || points.shape(1) != 3)
+    throw py::value_error("points must have the shape (N, 3)");
+  const std::size_t size = static_cast<std::size_t>(points.shape(0));
+  py::array_t<double> normals({points.shape(0), py::ssize_t(3)});
+  std::fill_n(normals.mutable_data(), 3 * size, 0.);
+  Rows rows(boost::counting_iterator<std::size_t>(0), boost::counting_iterator<std::size_t>(size));
+
+  const auto np = CGAL::RRHT::parameters::point_map(Row_point_map{points.data()})
+                    .normal_map(Row_normal_map{normals.mutable_data()})
+                    .neighbor_radius(options.radius)
+                    .number_of_rotations(options.rotations)
+                    .accumulator_slices(options.slices)
+                    .use_confidence_interval(options.confidence_interval)
+                    .sampling(options.sampling)
+                    .presampling_factor(options.presampling)
+                    .aggregation(options.aggregation)
+                    .cluster_angle(options.cluster_angle)
+                    .random_seed(options.seed);
+  tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
+  run_interruptibly(
+    [&](const std::function<bool(double)>& callback) {
+      arena.execute([&]() {
+        if(options.planes)
+          CGAL::rrht_estimate_normals<CGAL::Parallel_tag>(rows, options.k,
+                                                          np.callback(callback).number_of_planes(*options.planes));
+        else
+          CGAL::rrht_estimate_normals<CGAL::Parallel_tag>(rows, options.k, np.callback(callback));
+      });
+    },
+    progress);
+  return normals;
+}
+
+} // namespace
+
+PYBIND11_MODULE(_core, m)
+{
+  m.doc() = "CGAL::rrht_estimate_normals() on NumPy arrays; use cgal_rrht.estimate_normals().";
+  m.def(
+    "estimate_normals",
+    [](const py::array_t<double, py::array::c_style>& points, long long k, std::optional<double> radius,
+       std::optional<long long> planes, long long rotations, long long slices, bool confidence_interval,
+       const std::string& sampling, long long presampling, const std::string& aggregation, double cluster_angle,
+       long long seed, std::optional<long long> threads, const std::function<void(double)>& progress) {
+      Options options;
+      options.k = count<unsigned int>(k, "k");
+      options.radius = radius.value_or(0.);
+      options.planes = planes;
+      options.rotations = rotations;
+      options.slices = slices;
+      options.presampling = presampling;
+      options.confidence_interval = confidence_interval;
+      options.sampling = from_name(sampling,
+                                   std::map<std::string, CGAL::RRHT::Sampling>{{"points", CGAL::RRHT::Sampling::POINTS},
+                                                                              {"cubes", CGAL::RRHT::Sampling::CUBES},
+                                                                              {"unif", CGAL::RRHT::Sampling::UNIF}},
+                                   "sampling");
+      options.aggregation = from_name(
+        aggregation,
+        std::map<std::string, CGAL::RRHT::Aggregation>{{"mean", CGAL::RRHT::Aggregation::MEAN},
+                                                      {"best", CGAL::RRHT::Aggregation::BEST},
+                                                      {"cluster", CGAL::RRHT::Aggregation::CLUSTER}},
+        "aggregation");
+      options.cluster_angle = cluster_angle;
+      options.seed = count<unsigned int>(seed, "seed");
+      if(threads && (*threads < 1 || *threads > 1024)) // the bound of rrht_normals --threads
+        throw py::value_error("threads must be from 1 to 1024, got " + std::to_string(*threads));
+      options.threads = threads ? int(*threads) : 0;
+      return estimate_normals(points, options, progress);
+    },
+    py::arg("points").noconvert(), py::arg("k"), py::arg("radius").none(true), py::arg("planes").none(true),
+    py::arg("rotations"), py::arg("slices"), py::arg("confidence_interval"), py::arg("sampling"),
+    py::arg("presampling"), py::arg("aggregation"), py::arg("cluster_angle"), py::arg("seed"),
+    py::arg("threads").none(true), py::arg("progress").none(true),
+    "The estimation behind cgal_rrht.estimate_normals(), whose documentation says what each argument is.\n"
+    "`points` is a C-contiguous float64 array (N, 3), read in place; `progress`, if not None, is called\n"
+    "with the advancement (0 to 1).");
+}

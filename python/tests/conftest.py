@@ -1,0 +1,50 @@
+# Copyright (c) 2026 The CGAL RRHT authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Shared clouds with exact normals, and the command-line tool to compare with."""
+
+import os
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+ROOT = Path(__file__).resolve().parents[2]
+DATA = ROOT / "examples" / "data"
+
+
+def angle_errors_deg(normals, truth):
+    """Unoriented angle between each normal and its truth, in degrees (90 for a zero normal)."""
+    cosines = np.abs(np.sum(normals * truth, axis=1)) / np.maximum(
+        np.linalg.norm(normals, axis=1) * np.linalg.norm(truth, axis=1), 1e-300
+    )
+    return np.degrees(np.arccos(np.clip(cosines, 0.0, 1.0)))
+
+
+def noisy_cube(n, noise=0.002, seed=1):
+    """`n` points drawn uniformly on the unit cube's faces, with Gaussian noise of
+    `noise` times the diagonal, and the normal of each point's face."""
+    rng = np.random.default_rng(seed)
+    face = rng.integers(0, 6, n)
+    axis, side = face // 2, (face % 2).astype(float)
+    points = rng.random((n, 3))
+    points[np.arange(n), axis] = side
+    truth = np.zeros((n, 3))
+    truth[np.arange(n), axis] = 1.0
+    points += rng.normal(0.0, noise * np.sqrt(3.0), (n, 3))
+    return points, truth
+
+
+@pytest.fixture(scope="session")
+def fandisk():
+    """The bundled 20k points on the fandisk CAD part and their exact normals."""
+    data = np.loadtxt(DATA / "fandisk_20k_truth.xyz")
+    return np.ascontiguousarray(data[:, :3]), np.ascontiguousarray(data[:, 3:])
+
+
+@pytest.fixture(scope="session")
+def cli():
+    """The rrht_normals of a build: $CGAL_RRHT_CLI, else build/release's."""
+    path = os.environ.get("CGAL_RRHT_CLI") or str(ROOT / "build" / "release" / "examples" / "rrht_normals")
+    if not (os.path.isfile(path) and os.access(path, os.X_OK)):
+        pytest.skip(f"rrht_normals not found at {path} (build the examples, or set CGAL_RRHT_CLI)")
+    return path

@@ -1,0 +1,37 @@
+# Copyright (c) 2026 The CGAL RRHT authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""The same normals, bit for bit, as the command-line tool rrht_normals (which
+calls CGAL::rrht_estimate_normals() on the same points)."""
+
+import subprocess
+
+import numpy as np
+import pytest
+
+import cgal_rrht
+from conftest import DATA
+
+# (Python keyword arguments, the same for rrht_normals)
+SETTINGS = [
+    ({}, []),
+    (dict(planes=300, rotations=2, sampling="cubes"), ["--planes", "300", "--rotations", "2", "--sampling", "cubes"]),
+    (dict(planes=300, rotations=2, sampling="unif", aggregation="mean"),
+     ["--planes", "300", "--rotations", "2", "--sampling", "unif", "--aggregation", "mean"]),
+    (dict(radius=0.05, k=0, seed=7), ["--radius", "0.05", "-k", "0", "--seed", "7"]),
+    (dict(radius=0.05, k=30, aggregation="best", slices=12),
+     ["--radius", "0.05", "-k", "30", "--aggregation", "best", "--slices", "12"]),
+    (dict(k=18, confidence_interval=False, cluster_angle=30.0, threads=1),
+     ["-k", "18", "--no-confidence-interval", "--cluster-angle", "30", "--threads", "1"]),
+]
+
+
+@pytest.mark.parametrize("parameters, flags", SETTINGS)
+def test_same_normals_as_the_cli(cli, tmp_path, parameters, flags):
+    source = DATA / "fandisk_20k.xyz"
+    output = tmp_path / "normals.xyz"
+    subprocess.run([cli, str(source), str(output), "--precision", "17", "-q", *flags], check=True,
+                   stdout=subprocess.DEVNULL)
+    written = np.loadtxt(output)  # 17 digits: each double read back exactly
+    points = np.loadtxt(source)
+    assert np.array_equal(written[:, :3], points)
+    assert np.array_equal(cgal_rrht.estimate_normals(points, **parameters), written[:, 3:])

@@ -1,0 +1,182 @@
+# Copyright (c) 2026 The CGAL RRHT authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""cgal_rrht.estimate_normals(): accuracy, arrays in and out, parameters, bad input."""
+
+import doctest
+import inspect
+
+import numpy as np
+import pytest
+
+import cgal_rrht
+from conftest import angle_errors_deg, noisy_cube
+
+
+def test_noisy_cube_is_sharper_than_open3d():
+    """On a cube with 0.2% noise, RRHT keeps the edges that Open3D's PCA rounds off."""
+    o3d = pytest.importorskip("open3d")
+    points, truth = noisy_cube(20000)
+    rrht_above = np.mean(angle_errors_deg(cgal_rrht.estimate_normals(points), truth) > 10)
+    pcd = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(points))
+    pcd.estimate_normals(o3d.geometry.KDTreeSearchParamKNN(30))
+    open3d_above = np.mean(angle_errors_deg(np.asarray(pcd.normals), truth) > 10)
+    print(f"share above 10 degrees: RRHT {rrht_above:.2%}, Open3D KNN 30 {open3d_above:.2%}")
+    assert rrht_above < 0.3 * open3d_above
+    assert rrht_above < 0.05
+
+
+def test_fandisk_against_exact_normals(fandisk):
+    points, truth = fandisk
+    assert np.mean(angle_errors_deg(cgal_rrht.estimate_normals(points), truth) > 10) < 0.07
+    assert np.mean(angle_errors_deg(cgal_rrht.estimate_normals(points, k=30), truth) > 10) < 0.045
+
+
+def test_output_is_unit_float64_and_input_untouched(fandisk):
+    points, _ = fandisk
+    before = points.copy()
+    normals = cgal_rrht.estimate_normals(points, k=30)
+    assert normals.dtype == np.float64 and normals.shape == points.shape and normals.flags.c_contiguous
+    assert np.allclose(np.linalg.norm(normals, axis=1), 1.0, atol=1e-12)
+    assert np.array_equal(points, before)
+
+
+def test_float32_and_other_layouts_give_the_same_normals(fandisk):
+    """float32 is widened exactly; Fortran order, strided views and lists are copied first."""
+    points = fandisk[0].astype(np.float32)
+    expected = cgal_rrht.estimate_normals(points.astype(np.float64), k=30)
+    assert np.array_equal(cgal_rrht.estimate_normals(points, k=30), expected)
+    wide = points.astype(np.float64)
+    assert np.array_equal(cgal_rrht.estimate_normals(np.asfortranarray(wide), k=30), expected)
+    padded = np.zeros((len(wide), 4))
+    padded[:, :3] = wide
+    assert np.array_equal(cgal_rrht.estimate_normals(padded[:, :3], k=30), expected)
+    assert np.array_equal(cgal_rrht.estimate_normals(wide[:200].tolist(), k=30),
+                          cgal_rrht.estimate_normals(wide[:200], k=30))
+
+
+def test_same_seed_same_normals_whatever_the_threads(fandisk):
+    points, _ = fandisk
+    one = cgal_rrht.estimate_normals(points, threads=1, seed=3)
+    assert np.array_equal(one, cgal_rrht.estimate_normals(points, threads=2, seed=3))
+    assert np.array_equal(one, cgal_rrht.estimate_normals(points, seed=3))
+    assert not np.array_equal(one, cgal_rrht.estimate_normals(points, threads=1, seed=4))
+
+
+@pytest.mark.parametrize(
+    "parameters",
+    [
+        dict(sampling="cubes", planes=300, rotations=2),
+        dict(sampling="unif", planes=300, rotations=2, aggregation="mean"),
+        dict(radius=0.05, k=0, seed=7),
+        dict(radius=0.05, k=30, aggregation="best", slices=12),
+        dict(confidence_interval=False, planes=200, presampling=2, cluster_angle=30.0),
+    ],
+)
+def test_every_parameter_reaches_the_estimation(fandisk, parameters):
+    """Each setting gives good normals, and other normals than the defaults."""
+    points, truth = fandisk
+    normals = cgal_rrht.estimate_normals(points, **parameters)
+    assert np.mean(angle_errors_deg(normals, truth) > 10) < 0.1
+    assert not np.array_equal(normals, cgal_rrht.estimate_normals(points))
+
+
+def test_empty_and_degenerate_input():
+    assert cgal_rrht.estimate_normals(np.zeros((0, 3))).shape == (0, 3)
+    # Fewer than 3 distinct points, or collinear ones: no plane, zero normals.
+    assert np.array_equal(cgal_rrht.estimate_normals(np.ones((5, 3))), np.zeros((5, 3)))
+    line = np.outer(np.arange(50.0), [1.0, 2.0, 3.0])
+    assert np.array_equal(cgal_rrht.estimate_normals(line, k=10), np.zeros((50, 3)))
+
+
+def test_non_finite_points_get_zero_normals_and_no_nan():
+    points, _ = noisy_cube(3000)
+    points[10] = [np.nan, 0, 0]
+    points[20] = [np.inf, 1, 1]
+    normals = cgal_rrht.estimate_normals(points, k=30)
+    assert np.all(np.isfinite(normals))
+    assert np.array_equal(normals[[10, 20]], np.zeros((2, 3)))
+    assert np.all(np.linalg.norm(np.delete(normals, [10, 20], axis=0), axis=1) > 0.999)
+
+
+@pytest.mark.parametrize(
+    "points, error, message",
+    [
+        (np.zeros((10, 2)), ValueError, r"shape \(N, 3\), not \(10, 2\)"),
+        (np.zeros(30), ValueError, r"shape \(N, 3\)"),
+        (np.zeros((2, 3, 3)), ValueError, r"shape \(N, 3\)"),
+        (np.zeros((10, 3), dtype=np.int64), TypeError, "float64 or float32, not int64"),
+        (np.zeros((10, 3), dtype=np.float16), TypeError, "float64 or float32, not float16"),
+        (np.zeros((10, 3), dtype=complex), TypeError, "float64 or float32"),
+        ([["a", "b", "c"]], ValueError, "could not convert"),
+    ],
+)
+def test_bad_points(points, error, message):
+    with pytest.raises(error, match=message):
+        cgal_rrht.estimate_normals(points)
+
+
+@pytest.mark.parametrize(
+    "parameters, error, message",
+    [
+        (dict(k=0), ValueError, "k must be at least 1 when no neighbor_radius is given"),
+        (dict(k=-1), ValueError, "k must be from 0 to 4294967295, got -1"),
+        (dict(k=2**40), ValueError, "k must be from 0 to"),
+        (dict(k=2**70), ValueError, "k is out of range"),
+        (dict(k=10.5), TypeError, "k must be an integer, not float"),
+        (dict(k=True), TypeError, "k must be an integer, not bool"),
+        (dict(radius=-1.0), ValueError, "neighbor_radius must be finite and non-negative"),
+        (dict(radius=float("nan")), ValueError, "neighbor_radius must be finite and non-negative"),
+        (dict(radius=float("inf")), ValueError, "neighbor_radius must be finite and non-negative"),
+        (dict(planes=0), ValueError, r"number_of_planes \(T_R\) must be from 1 to 100000000"),
+        (dict(rotations=0), ValueError, r"number_of_rotations \(n_rot\) must be from 1 to 100000"),
+        (dict(rotations=-3), ValueError, r"number_of_rotations \(n_rot\) must be from 1 to 100000"),
+        (dict(slices=1001), ValueError, r"accumulator_slices \(n_phi\) must be from 1 to 1000"),
+        (dict(presampling=33), ValueError, r"presampling_factor \(c\) must be from 1 to 32"),
+        (dict(cluster_angle=181.0), ValueError, "cluster_angle must be from 0 to 180 degrees"),
+        (dict(cluster_angle=float("nan")), ValueError, "cluster_angle must be from 0 to 180 degrees"),
+        (dict(seed=-1), ValueError, "seed must be from 0 to 4294967295"),
+        (dict(seed=2**32), ValueError, "seed must be from 0 to 4294967295"),
+        (dict(threads=0), ValueError, "threads must be from 1 to 1024, got 0"),
+        (dict(threads=5000), ValueError, "threads must be from 1 to 1024, got 5000"),
+        (dict(sampling="Cubes"), ValueError, "unknown sampling 'Cubes': use one of 'points', 'cubes', 'unif'"),
+        (dict(aggregation="median"), ValueError, "unknown aggregation 'median': use one of 'mean', 'best', 'cluster'"),
+    ],
+)
+def test_bad_parameters(parameters, error, message):
+    """Checked before anything runs, also on an empty cloud, with the C++ message where C++ checks."""
+    for points in (np.zeros((0, 3)), noisy_cube(100)[0]):
+        with pytest.raises(error, match=message):
+            cgal_rrht.estimate_normals(points, **parameters)
+
+
+def test_numpy_integers_are_integers(fandisk):
+    points = fandisk[0][:2000]
+    assert np.array_equal(cgal_rrht.estimate_normals(points, k=np.int32(20), seed=np.uint64(5)),
+                          cgal_rrht.estimate_normals(points, k=20, seed=5))
+
+
+def test_progress_bar(fandisk, capsys):
+    pytest.importorskip("tqdm")
+    points = fandisk[0]
+    normals = cgal_rrht.estimate_normals(points, k=30, progress=True)
+    assert np.array_equal(normals, cgal_rrht.estimate_normals(points, k=30))
+    assert "20.0k/20.0k" in capsys.readouterr().err
+
+
+def test_documentation():
+    """help() lists every parameter with its default and the paper's name."""
+    doc = cgal_rrht.estimate_normals.__doc__
+    signature = inspect.signature(cgal_rrht.estimate_normals)
+    for name, parameter in signature.parameters.items():
+        assert f"\n    {name} : " in doc, name
+        if parameter.default is not inspect.Parameter.empty and parameter.default is not None:
+            assert f"default {parameter.default!r}".replace("'", '"') in doc, name
+    for paper_name in ("[K]", "[r]", "[T_R]", "[n_rot]", "[n_phi]", "eq. 10", "[RRHT_Points]", "[c]", "[RRHT_m",
+                       "[a_cluster]"):
+        assert paper_name in doc
+    assert list(signature.parameters)[:2] == ["points", "k"]
+    assert all(p.kind is inspect.Parameter.KEYWORD_ONLY for p in list(signature.parameters.values())[2:])
+
+
+def test_docstring_example():
+    assert doctest.testmod(cgal_rrht, raise_on_error=True).attempted > 0
