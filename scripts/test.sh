@@ -8,12 +8,14 @@
 #     packages, without network) and runs the Python tests on it;
 #  2. builds again with AddressSanitizer and UndefinedBehaviorSanitizer and
 #     runs it once more (RRHT_SANITIZE=0 skips this pass);
-#  3. builds in Release and runs the suite against each CGAL release of
-#     ../shared/cgal (5.6.1, 6.0.1, 6.2.1: see its README), unpacked under
-#     build/cgal without installing anything, and checks that the normals
-#     are the same, bit for bit, as with the system's CGAL (skipped, with a
-#     message, when ../shared/cgal is absent; RRHT_CGAL_VERSIONS=0 skips it);
-#  4. builds in Release with clang and runs the suite (RRHT_CLANG=0 skips it);
+#  3. builds in Release and runs the suite, the Python tests included,
+#     against each CGAL release of ../shared/cgal (5.6.1, 6.0.1, 6.2.1: see
+#     its README), unpacked under build/cgal without installing anything,
+#     and checks that the normals are the same, bit for bit, as with the
+#     system's CGAL (skipped, with a message, when ../shared/cgal is absent;
+#     RRHT_CGAL_VERSIONS=0 skips it);
+#  4. builds in Release with clang and runs the suite, the Python tests
+#     included (RRHT_CLANG=0 skips it);
 #  5. builds the reference documentation with Doxygen (scripts/build_docs.sh),
 #     which fails on any warning.
 # Every build fails on a compiler warning.
@@ -94,7 +96,8 @@ if [ "${RRHT_CGAL_VERSIONS:-1}" != "0" ]; then
         cgal_dir=$unpacked/$version/usr/lib/x86_64-linux-gnu/cmake/CGAL
       fi
       echo "== Release build and tests against CGAL $version"
-      run_suite "$root/build/cgal-$version" -DCMAKE_BUILD_TYPE=Release -DCGAL_DIR="$cgal_dir"
+      run_suite "$root/build/cgal-$version" -DCMAKE_BUILD_TYPE=Release -DCGAL_DIR="$cgal_dir" \
+                -DCGAL_RRHT_BUILD_PYTHON=ON -DPython_EXECUTABLE="$python"
       same_normals "$root/build/cgal-$version" "$root/build/release"
     done
   fi
@@ -105,6 +108,7 @@ bash "$root/scripts/build_docs.sh"
 
 if [ "${RRHT_CLANG:-1}" != "0" ]; then
   echo "== Release build and tests with clang"
-  run_suite "$root/build/clang" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++
+  run_suite "$root/build/clang" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ \
+            -DCGAL_RRHT_BUILD_PYTHON=ON -DPython_EXECUTABLE="$python"
   same_normals "$root/build/clang" "$root/build/release"
 fi

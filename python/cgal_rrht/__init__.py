@@ -187,6 +187,7 @@ def _integer(value: object, name: str) -> int:
 
 
 def _name(value: object, valid: tuple, name: str) -> str:
+    """``value`` if it is one of the ``valid`` names, or a ValueError listing them."""
     if value not in valid:
         raise ValueError(f"unknown {name} {value!r}: use one of {', '.join(map(repr, valid))}")
     return str(value)
