@@ -1,6 +1,6 @@
 # Checks on the files the example programs write, run by ctest:
 #   cmake -DCHECK=mesh -DFILE=out.off -DMIN_FACES=1000 -P check_outputs.cmake
-#   cmake -DCHECK=ply -DFILE=out.ply -DPOINTS=20000 -P check_outputs.cmake
+#   cmake -DCHECK=ply -DFILE=out.ply -DPOINTS=20000 [-DCONFIDENCE=ON] -P check_outputs.cmake
 #   cmake -DCHECK=rejected -DTOOL=rrht_normals "-DARGUMENTS=a|b|c" [-DEXIT_CODE=2] [-DMESSAGE=text] -P check_outputs.cmake
 #   cmake -DCHECK=failed_run_keeps_output -DTOOL=rrht_normals -DGOOD=good.xyz -DINPUT=bad.xyz -DWORK=dir -P check_outputs.cmake
 #   cmake -DCHECK=upper_case_extensions -DTOOL=rrht_normals -DINPUT=points.xyz -DWORK=dir -P check_outputs.cmake
@@ -17,12 +17,15 @@ if(CHECK STREQUAL "mesh")
   endif()
   message(STATUS "${FILE}: ${CMAKE_MATCH_1} vertices, ${CMAKE_MATCH_2} faces")
 elseif(CHECK STREQUAL "ply")
-  # A PLY file of POINTS vertices with normals.
+  # A PLY file of POINTS vertices with normals (and confidences if CONFIDENCE).
   file(STRINGS "${FILE}" header LIMIT_COUNT 12)
   string(REPLACE ";" "\n" header "${header}")
   if(NOT header MATCHES "element vertex ${POINTS}\n" OR NOT header MATCHES "property [a-z]+ nx\n"
      OR NOT header MATCHES "property [a-z]+ nz\n")
     message(FATAL_ERROR "${FILE} is not a PLY file of ${POINTS} points with normals:\n${header}")
+  endif()
+  if(CONFIDENCE AND NOT header MATCHES "property double confidence\n")
+    message(FATAL_ERROR "${FILE} has no property confidence:\n${header}")
   endif()
 elseif(CHECK STREQUAL "failed_run_keeps_output")
   # A run that fails must leave a previous output as it was, and no partial file.

@@ -13,6 +13,7 @@
 #include <CGAL/mst_orient_normals.h>
 #include <CGAL/IO/read_points.h>
 #include <CGAL/IO/write_points.h>
+#include <CGAL/IO/write_ply_points.h>
 #include <CGAL/property_map.h>
 #include <CGAL/Real_timer.h>
 
@@ -34,6 +35,7 @@
 #include <stdexcept>
 #include <string>
 #include <system_error>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -42,9 +44,11 @@
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef Kernel::Point_3 Point;
 typedef Kernel::Vector_3 Vector;
-typedef std::pair<Point, Vector> Point_with_normal;
-typedef CGAL::First_of_pair_property_map<Point_with_normal> Point_map;
-typedef CGAL::Second_of_pair_property_map<Point_with_normal> Normal_map;
+// A point, its normal and the normal's confidence (written with --confidence).
+typedef std::tuple<Point, Vector, double> Point_with_normal;
+typedef CGAL::Nth_of_tuple_property_map<0, Point_with_normal> Point_map;
+typedef CGAL::Nth_of_tuple_property_map<1, Point_with_normal> Normal_map;
+typedef CGAL::Nth_of_tuple_property_map<2, Point_with_normal> Confidence_map;
 
 namespace fs = std::filesystem;
 namespace po = boost::program_options;
@@ -140,17 +144,42 @@ private:
   clock::time_point m_start, m_last;
 };
 
-// Writes the points with their normals to `path`, in the format of its
-// extension, through a temporary file renamed at the end, so that a failed
-// run never leaves a partial file in place of a good one. The temporary
-// file ends with the same extension, by which write_points() chooses.
-bool write_atomically(const fs::path& path, const std::vector<Point_with_normal>& points, int precision)
+// Writes the points with their normals and confidences: a binary PLY with a
+// property `confidence` after the normal, as CGAL::IO::write_PLY() writes
+// the rest, or an .xyz file with the confidence in a 7th column.
+bool write_with_confidence(const fs::path& path, const std::vector<Point_with_normal>& points, int precision)
+{
+  if(boost::algorithm::iequals(path.extension().string(), ".ply"))
+  {
+    std::ofstream os(path, std::ios::binary);
+    CGAL::IO::set_mode(os, CGAL::IO::BINARY);
+    return CGAL::IO::write_PLY_with_properties(
+             os, points, CGAL::IO::make_ply_point_writer(Point_map()), CGAL::IO::make_ply_normal_writer(Normal_map()),
+             std::make_pair(Confidence_map(), CGAL::IO::PLY_property<double>("confidence"))) &&
+           bool(os.flush());
+  }
+  std::ofstream os(path);
+  os.precision(precision);
+  for(const Point_with_normal& p : points)
+    os << std::get<0>(p) << ' ' << std::get<1>(p) << ' ' << std::get<2>(p) << '\n';
+  return bool(os.flush());
+}
+
+// Writes the points with their normals (and their confidences if
+// `confidence`) to `path`, in the format of its extension, through a
+// temporary file renamed at the end, so that a failed run never leaves a
+// partial file in place of a good one. The temporary file ends with the same
+// extension, by which write_points() chooses.
+bool write_atomically(const fs::path& path, const std::vector<Point_with_normal>& points, int precision,
+                      bool confidence)
 {
   fs::path temporary = path;
   temporary += ".partial." + std::to_string(::getpid());
   temporary += path.extension();
-  const bool written = CGAL::IO::write_points(
-    temporary.string(), points, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()).stream_precision(precision));
+  const bool written =
+    confidence ? write_with_confidence(temporary, points, precision)
+               : CGAL::IO::write_points(temporary.string(), points,
+                                        CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()).stream_precision(precision));
   std::error_code error;
   if(written)
     fs::rename(temporary, path, error);
@@ -199,6 +228,8 @@ int main(int argc, char** argv)
     ("precision", po::value<long long>()->default_value(9),
      "significant digits written (1 to 17; 17 writes the computed doubles exactly)")
     ("orient", "orient the normals with CGAL::mst_orient_normals() (18 neighbors)")
+    ("confidence", "also write each normal's confidence, from 0 to 1: a PLY property 'confidence', or a 7th "
+                   "column in .xyz")
     ("quiet,q", "no progress bar");
   po::options_description hidden;
   hidden.add_options()("input", po::value<std::string>())("output", po::value<std::string>());
@@ -241,6 +272,8 @@ int main(int argc, char** argv)
       throw po::error("cannot read '" + input + "': the input must be " + one_of(input_extensions));
     if(!has_extension(output, output_extensions))
       throw po::error("cannot write '" + output + "': the output must be " + one_of(output_extensions));
+    if(options.count("confidence") && has_extension(output, { ".pwn" }))
+      throw po::error("--confidence needs a .ply or .xyz output: .pwn holds points and normals only");
 
     const unsigned int k = static_cast<unsigned int>(options["neighbors"].as<long long>());
     const long long planes = options["planes"].as<long long>(); // 0: the library's default
@@ -255,7 +288,8 @@ int main(int argc, char** argv)
                       .aggregation(choice(options, "aggregation", aggregations))
                       .cluster_angle(options["cluster-angle"].as<double>())
                       .random_seed(static_cast<unsigned int>(options["seed"].as<long long>()))
-                      .callback(callback);
+                      .callback(callback)
+                      .confidence_map(Confidence_map());
     // The estimation with the parameters of the command line, run once on no
     // point before the input is read: CGAL::rrht_estimate_normals() checks
     // its parameters before it looks at the points, so that a value out of
@@ -321,10 +355,10 @@ int main(int argc, char** argv)
 
   std::size_t without_normal = 0;
   for(const Point_with_normal& pn : points)
-    without_normal += (pn.second == CGAL::NULL_VECTOR);
+    without_normal += (std::get<1>(pn) == CGAL::NULL_VECTOR);
 
   // Write.
-  if(!write_atomically(output, points, int(options["precision"].as<long long>())))
+  if(!write_atomically(output, points, int(options["precision"].as<long long>()), options.count("confidence") > 0))
   {
     std::cerr << "rrht_normals: cannot write '" << output << "'" << std::endl;
     return runtime_error;

@@ -31,6 +31,7 @@ struct Sample
   Point point;
   Vector truth;
   Vector normal = CGAL::NULL_VECTOR;
+  double confidence = -1; // written by RRHT through `Confidence_of_sample`
 };
 typedef std::vector<Sample> Cloud;
 
@@ -52,6 +53,15 @@ struct Normal_of_sample
   typedef Vector reference;
   typedef boost::writable_property_map_tag category;
   friend void put(Normal_of_sample, Sample& s, const Vector& n) { s.normal = n; }
+};
+
+struct Confidence_of_sample
+{
+  typedef Sample key_type;
+  typedef double value_type;
+  typedef double reference;
+  typedef boost::writable_property_map_tag category;
+  friend void put(Confidence_of_sample, Sample& s, double c) { s.confidence = c; }
 };
 
 const double pi = CGAL_PI;

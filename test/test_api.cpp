@@ -306,6 +306,56 @@ TEST_CASE("Same seed, same normals, bit for bit, whatever the concurrency and th
 }
 #endif
 
+TEST_CASE("confidence_map: into a Point_set_3 property, the same whatever the threads, 0 where no normal", "[api][confidence]")
+{
+  const rrht_test::Cloud truth = noisy_cube(3000);
+  auto run = [&](auto concurrency, int threads) {
+    CGAL::Point_set_3<SC::Point_3> point_set;
+    point_set.add_normal_map();
+    auto confidence = point_set.add_property_map<double>("confidence", -1.).first;
+    for(const auto& s : truth)
+      point_set.insert(s.point);
+    point_set.insert(SC::Point_3(std::numeric_limits<double>::quiet_NaN(), 0, 0)); // no normal
+#ifdef CGAL_LINKED_WITH_TBB
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+#endif
+    (void)threads;
+    CGAL::rrht_estimate_normals<decltype(concurrency)>(point_set, 30, params::confidence_map(confidence));
+    std::vector<std::pair<SC::Vector_3, double> > out;
+    for(auto i : point_set)
+      out.emplace_back(point_set.normal(i), confidence[i]);
+    return out;
+  };
+  const auto sequential = run(CGAL::Sequential_tag(), 1);
+  for(std::size_t i = 0; i < truth.size(); ++i)
+  {
+    CHECK(sequential[i].second > 0);
+    CHECK(sequential[i].second <= 1);
+  }
+  for(std::size_t i = truth.size(); i < sequential.size(); ++i)
+  {
+    CHECK(sequential[i].first == SC::Vector_3(CGAL::NULL_VECTOR));
+    CHECK(sequential[i].second == 0);
+  }
+#ifdef CGAL_LINKED_WITH_TBB
+  for(int threads : { 1, 2, 3 })
+    CHECK(run(CGAL::Parallel_tag(), threads) == sequential);
+#endif
+
+  // Collinear points: no plane, so no normal and no confidence.
+  CGAL::Point_set_3<SC::Point_3> line;
+  line.add_normal_map();
+  auto confidence = line.add_property_map<double>("confidence", -1.).first;
+  for(int i = 0; i < 20; ++i)
+    line.insert(SC::Point_3(i, 2 * i, 3 * i));
+  CGAL::rrht_estimate_normals<CGAL::Sequential_tag>(line, 10, params::confidence_map(confidence));
+  for(auto i : line)
+  {
+    CHECK(line.normal(i) == SC::Vector_3(CGAL::NULL_VECTOR));
+    CHECK(confidence[i] == 0);
+  }
+}
+
 TEST_CASE("The callback reports progress, and returning false stops, leaving the rest unchanged", "[api][callback]")
 {
   const rrht_test::Cloud truth = noisy_cube(5000), large = noisy_cube(200000);

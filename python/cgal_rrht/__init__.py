@@ -11,7 +11,7 @@ the normals of an Open3D point cloud.
 
 from __future__ import annotations
 
-from typing import Optional
+from typing import Literal, Optional, Tuple, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -25,6 +25,48 @@ __version__ = "0.1.0"
 SAMPLINGS = ("points", "cubes", "unif")
 #: The values of ``aggregation``: RRHT_m, RRHT_b, RRHT_c (paper, Section 4).
 AGGREGATIONS = ("mean", "best", "cluster")
+
+
+@overload
+def estimate_normals(
+    points: npt.ArrayLike,
+    k: int = ...,
+    *,
+    radius: Optional[float] = ...,
+    planes: Optional[int] = ...,
+    rotations: int = ...,
+    slices: int = ...,
+    confidence_interval: bool = ...,
+    sampling: str = ...,
+    presampling: int = ...,
+    aggregation: str = ...,
+    cluster_angle: float = ...,
+    seed: int = ...,
+    threads: Optional[int] = ...,
+    progress: bool = ...,
+    return_confidence: Literal[False] = ...,
+) -> npt.NDArray[np.float64]: ...
+
+
+@overload
+def estimate_normals(
+    points: npt.ArrayLike,
+    k: int = ...,
+    *,
+    radius: Optional[float] = ...,
+    planes: Optional[int] = ...,
+    rotations: int = ...,
+    slices: int = ...,
+    confidence_interval: bool = ...,
+    sampling: str = ...,
+    presampling: int = ...,
+    aggregation: str = ...,
+    cluster_angle: float = ...,
+    seed: int = ...,
+    threads: Optional[int] = ...,
+    progress: bool = ...,
+    return_confidence: Literal[True],
+) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]: ...
 
 
 def estimate_normals(
@@ -43,7 +85,8 @@ def estimate_normals(
     seed: int = 0,
     threads: Optional[int] = None,
     progress: bool = False,
-) -> npt.NDArray[np.float64]:
+    return_confidence: bool = False,
+) -> Union[npt.NDArray[np.float64], Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]]:
     """Estimates the normals of a point cloud, keeping sharp features.
 
     For each point, planes through random triples of its neighbors vote in a
@@ -102,15 +145,25 @@ def estimate_normals(
         The number of threads for this call, 1 to 1024; default: all cores.
     progress : bool, default False
         Show a progress bar (tqdm) on stderr.
+    return_confidence : bool, default False
+        Also return the confidence of each normal (beyond the paper; the
+        named parameter ``confidence_map`` of the C++ function).
 
     Returns
     -------
-    numpy.ndarray, shape (N, 3), float64
+    normals : numpy.ndarray, shape (N, 3), float64
         Unit normals, not oriented (``open3d``'s
         ``orient_normals_consistent_tangent_plane`` or CGAL's
         ``mst_orient_normals`` orient them); the zero vector where no plane
         can be formed (fewer than 3 distinct or only collinear neighbors, a
         non-finite point).
+    confidence : numpy.ndarray, shape (N,), float64
+        Only with ``return_confidence``: from 0 to 1, the share of all the
+        planes drawn at the point, over the rotated accumulators, that voted
+        for a most voted bin within ``cluster_angle`` of the returned normal.
+        It drops near sharp features and where the normal is wrong, so a low
+        value flags a normal to distrust; noise lowers it evenly over a
+        cloud, so compare values within a cloud. 0 where the normal is zero.
 
     Raises
     ------
@@ -137,6 +190,9 @@ def estimate_normals(
     >>> normals = cgal_rrht.estimate_normals(points, k=30)
     >>> bool(np.allclose(np.abs(normals[:, 2]), 1))
     True
+    >>> normals, confidence = cgal_rrht.estimate_normals(points, k=30, return_confidence=True)
+    >>> bool(((confidence > 0) & (confidence <= 1)).all())
+    True
     """
     if isinstance(points, np.ndarray):
         if points.dtype not in (np.float64, np.float32):
@@ -161,9 +217,11 @@ def estimate_normals(
         cluster_angle=float(cluster_angle),
         seed=_integer(seed, "seed"),
         threads=None if threads is None else _integer(threads, "threads"),
+        return_confidence=bool(return_confidence),
     )
     if not progress:
-        return _core.estimate_normals(array, progress=None, **arguments)
+        normals, confidence = _core.estimate_normals(array, progress=None, **arguments)
+        return (normals, confidence) if return_confidence else normals
     try:
         from tqdm.auto import tqdm
     except ImportError as error:
@@ -174,9 +232,9 @@ def estimate_normals(
         def advance(done: float) -> None:
             bar.update(int(done * len(array)) - bar.n)
 
-        normals = _core.estimate_normals(array, progress=advance, **arguments)
+        normals, confidence = _core.estimate_normals(array, progress=advance, **arguments)
         advance(1.0)
-    return normals
+    return (normals, confidence) if return_confidence else normals
 
 
 def _integer(value: object, name: str) -> int:

@@ -1,5 +1,5 @@
 # Type stub of the compiled module (python/src/core.cpp).
-from typing import Callable, Optional
+from typing import Callable, Optional, Tuple
 
 import numpy as np
 import numpy.typing as npt
@@ -18,5 +18,6 @@ def estimate_normals(
     cluster_angle: float,
     seed: int,
     threads: Optional[int],
+    return_confidence: bool,
     progress: Optional[Callable[[float], None]],
-) -> npt.NDArray[np.float64]: ...
+) -> Tuple[npt.NDArray[np.float64], Optional[npt.NDArray[np.float64]]]: ...

@@ -20,7 +20,9 @@ def estimate_normals(pcd: Any, **kwargs: Any) -> Any:
     arguments are those of :func:`cgal_rrht.estimate_normals` (``k``,
     ``radius``, ``sampling``, ``seed``...). The normals are unit and not
     oriented: ``pcd.orient_normals_consistent_tangent_plane(k)`` orients
-    them. Returns ``pcd``.
+    them. Returns ``pcd``, or ``(pcd, confidence)`` with
+    ``return_confidence=True`` (the confidence of each normal, a NumPy
+    array of shape (N,)).
 
     Raises
     ------
@@ -32,6 +34,7 @@ def estimate_normals(pcd: Any, **kwargs: Any) -> Any:
     if not isinstance(pcd, o3d.geometry.PointCloud):
         raise TypeError(f"pcd must be an open3d.geometry.PointCloud, not {type(pcd).__name__}")
     # Open3D's points are a contiguous float64 (N, 3) buffer, read in place.
-    normals = cgal_rrht.estimate_normals(np.asarray(pcd.points), **kwargs)
+    result = cgal_rrht.estimate_normals(np.asarray(pcd.points), **kwargs)
+    normals, confidence = result if kwargs.get("return_confidence") else (result, None)
     pcd.normals = o3d.utility.Vector3dVector(normals)
-    return pcd
+    return pcd if confidence is None else (pcd, confidence)

@@ -76,6 +76,23 @@ struct Row_normal_map
   }
 };
 
+/// Element i of a (N,) array of doubles, written as a confidence; nothing
+/// is written when `data` is null (the confidence was not asked for).
+struct Row_confidence_map
+{
+  typedef std::size_t key_type;
+  typedef double value_type;
+  typedef double reference;
+  typedef boost::writable_property_map_tag category;
+  double* data;
+
+  friend void put(const Row_confidence_map& map, std::size_t i, double confidence)
+  {
+    if(map.data)
+      map.data[i] = confidence;
+  }
+};
+
 template <typename Enum>
 Enum from_name(const std::string& name, const std::map<std::string, Enum>& names, const char* what)
 {
@@ -173,18 +190,22 @@ void run_interruptibly(const std::function<void(const std::function<bool(double)
     std::rethrow_exception(cpp_error);
 }
 
-py::array_t<double> estimate_normals(const py::array_t<double, py::array::c_style>& points, const Options& options,
-                                     const std::function<void(double)>& progress)
+/// The normals, and their confidences if `with_confidence` (else None). Every
+/// row is written (a point with no normal gets zeros); on an interruption or
+/// an error nothing is returned.
+py::tuple estimate_normals(const py::array_t<double, py::array::c_style>& points, const Options& options,
+                           bool with_confidence, const std::function<void(double)>& progress)
 {
   if(points.ndim() != 2 || points.shape(1) != 3)
     throw py::value_error("points must have the shape (N, 3)");
   const std::size_t size = static_cast<std::size_t>(points.shape(0));
   py::array_t<double> normals({points.shape(0), py::ssize_t(3)});
-  std::fill_n(normals.mutable_data(), 3 * size, 0.);
+  py::array_t<double> confidence(with_confidence ? points.shape(0) : 0);
   Rows rows(boost::counting_iterator<std::size_t>(0), boost::counting_iterator<std::size_t>(size));
 
   const auto np = CGAL::RRHT::parameters::point_map(Row_point_map{points.data()})
                     .normal_map(Row_normal_map{normals.mutable_data()})
+                    .confidence_map(Row_confidence_map{with_confidence ? confidence.mutable_data() : nullptr})
                     .neighbor_radius(options.radius)
                     .number_of_rotations(options.rotations)
                     .accumulator_slices(options.slices)
@@ -206,7 +227,7 @@ py::array_t<double> estimate_normals(const py::array_t<double, py::array::c_styl
       });
     },
     progress);
-  return normals;
+  return with_confidence ? py::make_tuple(normals, confidence) : py::make_tuple(normals, py::none());
 }
 
 } // namespace
@@ -219,7 +240,8 @@ PYBIND11_MODULE(_core, m)
     [](const py::array_t<double, py::array::c_style>& points, long long k, std::optional<double> radius,
        std::optional<long long> planes, long long rotations, long long slices, bool confidence_interval,
        const std::string& sampling, long long presampling, const std::string& aggregation, double cluster_angle,
-       long long seed, std::optional<long long> threads, const std::function<void(double)>& progress) {
+       long long seed, std::optional<long long> threads, bool return_confidence,
+       const std::function<void(double)>& progress) {
       Options options;
       options.k = count<unsigned int>(k, "k");
       options.radius = radius.value_or(0.);
@@ -244,13 +266,14 @@ PYBIND11_MODULE(_core, m)
       if(threads && (*threads < 1 || *threads > 1024)) // the bound of rrht_normals --threads
         throw py::value_error("threads must be from 1 to 1024, got " + std::to_string(*threads));
       options.threads = threads ? int(*threads) : 0;
-      return estimate_normals(points, options, progress);
+      return estimate_normals(points, options, return_confidence, progress);
     },
     py::arg("points").noconvert(), py::arg("k"), py::arg("radius").none(true), py::arg("planes").none(true),
     py::arg("rotations"), py::arg("slices"), py::arg("confidence_interval"), py::arg("sampling"),
     py::arg("presampling"), py::arg("aggregation"), py::arg("cluster_angle"), py::arg("seed"),
-    py::arg("threads").none(true), py::arg("progress").none(true),
+    py::arg("threads").none(true), py::arg("return_confidence"), py::arg("progress").none(true),
     "The estimation behind cgal_rrht.estimate_normals(), whose documentation says what each argument is.\n"
     "`points` is a C-contiguous float64 array (N, 3), read in place; `progress`, if not None, is called\n"
-    "with the advancement (0 to 1).");
+    "with the advancement (0 to 1). Returns the normals (N, 3) and, if `return_confidence`, their\n"
+    "confidences (N,), else None.");
 }

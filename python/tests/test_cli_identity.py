@@ -35,3 +35,29 @@ def test_same_normals_as_the_cli(cli, tmp_path, parameters, flags):
     points = np.loadtxt(source)
     assert np.array_equal(written[:, :3], points)
     assert np.array_equal(cgal_rrht.estimate_normals(points, **parameters), written[:, 3:])
+
+
+@pytest.mark.parametrize("extension", [".xyz", ".ply"])
+def test_same_confidence_as_the_cli(cli, tmp_path, extension):
+    """``--confidence``: a 7th column in .xyz, a double property ``confidence`` in a binary PLY."""
+    source = DATA / "fandisk_20k.xyz"
+    output = tmp_path / ("normals" + extension)
+    subprocess.run([cli, str(source), str(output), "--precision", "17", "-q", "--confidence"], check=True,
+                   stdout=subprocess.DEVNULL)
+    if extension == ".xyz":
+        written = np.loadtxt(output)
+    else:
+        data = output.read_bytes()
+        end = data.index(b"end_header\n") + len(b"end_header\n")
+        header = data[:end].decode().splitlines()
+        assert "format binary_little_endian 1.0" in header
+        assert [line.split()[-1] for line in header if line.startswith("property")] == [
+            "x", "y", "z", "nx", "ny", "nz", "confidence"]
+        assert all(line.startswith("property double") for line in header if line.startswith("property"))
+        written = np.frombuffer(data[end:], dtype="<f8").reshape(-1, 7)
+    points = np.loadtxt(source)
+    normals, confidence = cgal_rrht.estimate_normals(points, return_confidence=True)
+    assert written.shape == (len(points), 7)
+    assert np.array_equal(written[:, :3], points)
+    assert np.array_equal(written[:, 3:6], normals)
+    assert np.array_equal(written[:, 6], confidence)

@@ -25,6 +25,49 @@ def test_noisy_cube_is_sharper_than_open3d():
     assert rrht_above < 0.05
 
 
+def roc_auc(score, positive):
+    """Area under the ROC curve of ``score`` as a predictor of ``positive`` (ties count one half)."""
+    order = np.argsort(score, kind="stable")
+    sorted_score = score[order]
+    ranks = np.empty(len(score))
+    # Average ranks (from 1) over runs of equal scores.
+    _, first, counts = np.unique(sorted_score, return_index=True, return_counts=True)
+    ranks[order] = np.repeat(first + (counts + 1) / 2.0, counts)
+    n1 = positive.sum()
+    n0 = len(positive) - n1
+    return (ranks[positive].sum() - n1 * (n1 + 1) / 2.0) / (n1 * n0)
+
+
+def test_confidence_predicts_the_errors_of_a_noisy_cube():
+    """1 - confidence ranks the normals off by more than 10 degrees first (AUC), and is
+    lower near the edges; asking for it changes no normal."""
+    points, truth = noisy_cube(20000)
+    normals, confidence = cgal_rrht.estimate_normals(points, return_confidence=True)
+    assert confidence.shape == (len(points),) and confidence.dtype == np.float64
+    assert np.all((confidence > 0) & (confidence <= 1))
+    assert np.array_equal(normals, cgal_rrht.estimate_normals(points))
+    wrong = angle_errors_deg(normals, truth) > 10
+    auc = roc_auc(1 - confidence, wrong)
+    # Distance to the nearest edge of the unit cube: the second smallest distance to a face plane.
+    near_edge = np.sort(np.minimum(np.abs(points), np.abs(1 - points)), axis=1)[:, 1] < 0.01 * np.sqrt(3)
+    print(f"AUC {auc:.3f}, median confidence {np.median(confidence[near_edge]):.3f} near edges, "
+          f"{np.median(confidence[~near_edge]):.3f} elsewhere")
+    assert auc >= 0.88
+    assert np.median(confidence[near_edge]) < 0.6 * np.median(confidence[~near_edge])
+
+
+def test_confidence_of_points_without_normal_is_zero():
+    points, _ = noisy_cube(3000)
+    points[10] = [np.nan, 0, 0]
+    normals, confidence = cgal_rrht.estimate_normals(points, k=30, return_confidence=True)
+    assert confidence[10] == 0 and np.array_equal(normals[10], np.zeros(3))
+    line = np.outer(np.arange(50.0), [1.0, 2.0, 3.0])
+    normals, confidence = cgal_rrht.estimate_normals(line, k=10, return_confidence=True)
+    assert np.array_equal(confidence, np.zeros(50))
+    normals, confidence = cgal_rrht.estimate_normals(np.zeros((0, 3)), return_confidence=True)
+    assert normals.shape == (0, 3) and confidence.shape == (0,)
+
+
 def test_fandisk_against_exact_normals(fandisk):
     points, truth = fandisk
     assert np.mean(angle_errors_deg(cgal_rrht.estimate_normals(points), truth) > 10) < 0.07

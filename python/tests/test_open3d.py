@@ -24,6 +24,16 @@ def test_fills_the_normals_of_a_point_cloud(fandisk):
     assert np.mean(angle_errors_deg(normals, truth) > 10) < 0.05
 
 
+def test_returns_the_confidence_on_request(fandisk):
+    points, _ = fandisk
+    pcd = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(points))
+    result, confidence = cgal_rrht.open3d.estimate_normals(pcd, k=50, return_confidence=True)
+    expected_normals, expected_confidence = cgal_rrht.estimate_normals(points, k=50, return_confidence=True)
+    assert result is pcd
+    assert np.array_equal(np.asarray(pcd.normals), expected_normals)
+    assert np.array_equal(confidence, expected_confidence)
+
+
 def test_replaces_existing_normals_and_orients_with_open3d(fandisk):
     points, truth = fandisk
     pcd = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(points))

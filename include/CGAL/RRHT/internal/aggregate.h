@@ -20,11 +20,12 @@ namespace RRHT {
 namespace internal {
 
 /// The outcome of one run of the Hough transform: the normal of its most
-/// voted bin and the votes of that bin.
+/// voted bin, the votes of that bin and the votes of all bins.
 struct Candidate_normal
 {
   Eigen::Vector3d normal;
   std::size_t votes;
+  std::size_t all_votes;
 };
 
 // Vote-weighted mean of the candidates `members` says to take, each turned to

@@ -15,6 +15,7 @@
 #include <CGAL/RRHT/internal/Scratch.h>
 #include <CGAL/RRHT/internal/Settings.h>
 #include <CGAL/RRHT/internal/aggregate.h>
+#include <CGAL/RRHT/internal/confidence.h>
 #include <CGAL/RRHT/internal/hough_transform.h>
 #include <CGAL/RRHT/internal/rotate.h>
 
@@ -27,11 +28,19 @@ namespace CGAL {
 namespace RRHT {
 namespace internal {
 
+/// A unit normal and its confidence in [0, 1] (`confidence()`), or the zero
+/// vector and 0 where no plane could be formed.
+struct Estimated_normal
+{
+  Eigen::Vector3d normal;
+  double confidence;
+};
+
 /// The normal of a neighborhood from n_rot randomly rotated accumulators
 /// (Section 4): each run sees the points rotated, its normal is rotated back,
 /// and the normals are aggregated.
 template <typename Sampler>
-Eigen::Vector3d rotated_hough_transforms(const Neighborhood& neighborhood, Sampler& sampler, Random& rng,
+Estimated_normal rotated_hough_transforms(const Neighborhood& neighborhood, Sampler& sampler, Random& rng,
                                          const Settings& settings, Scratch& scratch)
 {
   const std::vector<Eigen::Vector3d>& points = neighborhood.points;
@@ -47,14 +56,15 @@ Eigen::Vector3d rotated_hough_transforms(const Neighborhood& neighborhood, Sampl
     candidate.normal = rotation.transpose() * candidate.normal; // back to the frame of the cloud
     scratch.candidates.push_back(candidate);
   }
-  return aggregate(scratch.candidates, settings.aggregation, settings.cos_cluster_angle);
+  const Eigen::Vector3d normal = aggregate(scratch.candidates, settings.aggregation, settings.cos_cluster_angle);
+  return Estimated_normal{ normal, confidence(scratch.candidates, normal, settings.cos_cluster_angle) };
 }
 
 /// The normal at the point at `position` in the search's order, the
 /// `input_index`-th of the input (Section 2): draws plane hypotheses in its
 /// neighborhood with n_rot randomly rotated accumulators and combines their
 /// winners. Returns the zero vector when no plane can be formed.
-inline Eigen::Vector3d estimate_normal(std::size_t position, std::size_t input_index, const Neighbor_search& search,
+inline Estimated_normal estimate_normal(std::size_t position, std::size_t input_index, const Neighbor_search& search,
                                        const Settings& settings, Scratch& scratch)
 {
   Neighborhood& neighborhood = scratch.neighborhood;
@@ -64,7 +74,7 @@ inline Eigen::Vector3d estimate_normal(std::size_t position, std::size_t input_i
   // below 1e-300) that the points cannot be scaled to the unit ball, nor to
   // the grids of RRHT_Cubes and RRHT_Unif, without overflow.
   if(points.size() < 3 || !(neighborhood.radius >= 1e-300))
-    return Eigen::Vector3d::Zero();
+    return Estimated_normal{ Eigen::Vector3d::Zero(), 0. };
 
   // One random stream per point: the same normals whatever the threads.
   Random rng(settings.seed, input_index);

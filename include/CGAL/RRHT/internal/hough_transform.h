@@ -60,7 +60,8 @@ Candidate_normal hough_transform(const std::vector<Eigen::Vector3f>& points, Sam
     drawn += got;
     stop |= (got < wanted); // every triple of the neighborhood has voted
   }
-  return Candidate_normal{ accumulator.normal_of_most_voted_bin(), accumulator.votes_of_most_voted_bin() };
+  return Candidate_normal{ accumulator.normal_of_most_voted_bin(), accumulator.votes_of_most_voted_bin(),
+                           accumulator.number_of_votes() };
 }
 
 } // namespace internal
