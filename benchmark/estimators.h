@@ -124,6 +124,19 @@ inline Estimator rrht_defaults(const Neighborhood& n)
   return e;
 }
 
+/// `rrht_defaults()` that also writes each point's confidence
+/// (`confidence_map`): "RRHT_defaults_K100_confidence".
+inline Estimator rrht_defaults_with_confidence(const Neighborhood& n)
+{
+  Estimator e = rrht_defaults(n);
+  e.name += "_confidence";
+  e.estimate = [n](Cloud& cloud, unsigned int) {
+    CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(
+      cloud, n.k, sample_maps().neighbor_radius(n.radius).confidence_map(Confidence_of_sample()));
+  };
+  return e;
+}
+
 /// The bare cost of RRHT's neighborhoods: what `rrht_estimate_normals()`
 /// does besides its Hough transforms. The copy of the cloud, the Hilbert sort
 /// and the kd-tree of `CGAL::RRHT::internal::Neighbor_search`, then the neighborhood of

@@ -128,16 +128,17 @@ inline std::size_t read_all(int fd, void* data, std::size_t size)
   return got;
 }
 
-// Per-point errors for the renderings: x y z, truth, error in degrees.
+// Per-point errors for the renderings: x y z, truth, error in degrees, and
+// the confidence (-1 unless the estimator wrote one), for every sample in
+// order (a sample without truth has the error -1).
 inline void write_errors(const Cloud& cloud, const std::string& path)
 {
   std::FILE* f = std::fopen(path.c_str(), "w");
   if(!f)
     return;
   for(const Sample& s : cloud)
-    if(s.truth != CGAL::NULL_VECTOR)
-      std::fprintf(f, "%.6g %.6g %.6g %.4g %.4g %.4g %.3f\n", s.point.x(), s.point.y(), s.point.z(), s.truth.x(),
-                   s.truth.y(), s.truth.z(), angle_error(s));
+    std::fprintf(f, "%.6g %.6g %.6g %.4g %.4g %.4g %.3f %.6g\n", s.point.x(), s.point.y(), s.point.z(), s.truth.x(),
+                 s.truth.y(), s.truth.z(), s.truth != CGAL::NULL_VECTOR ? angle_error(s) : -1., s.confidence);
   std::fclose(f);
 }
 

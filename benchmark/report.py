@@ -119,6 +119,7 @@ TITLES = {
     "real_scans": "Real scans without normals (../shared/data/scans): time and memory",
     "targets": "Performance targets (issues 5 and 16): 100k-point cube and 1M-point sphere, 0.2% noise; time against k",
     "scaling": "Time against the number of points at the fast setting (sphere, 0.2% noise)",
+    "confidence": "Confidence per point (confidence_map): does it predict the error? (100k points, 0.2% noise)",
 }
 
 COLORS = {"Points": "tab:blue", "Cubes": "tab:orange", "Unif": "tab:green", "jet_K80": "black",
@@ -337,11 +338,12 @@ def error_color(e):
 
 
 def load_errors(path):
+    """x y z, truth, error (-1: no truth) and confidence (-1: none) per line; the points with a truth."""
     data = []
     with open(path) as f:
         for line in f:
             v = [float(x) for x in line.split()]
-            if len(v) == 7:
+            if len(v) >= 7 and v[6] >= 0:
                 data.append(v)
     return data
 
@@ -350,9 +352,14 @@ VIEWS = {"cube": (1.0, 0.7, 0.5), "cylinder": (1.0, 0.4, 0.6), "fandisk": (1.0, 
          "corner": (1.0, 1.0, 1.0)}
 
 
-def render(ax, data, dataset, title):
+def confidence_color(c, top):
+    """Dark red (0) to yellow to white (``top``, the cloud's 90th percentile, and above)."""
+    return plt.get_cmap("hot")(0.1 + 0.9 * min(1.0, c / top))
+
+
+def render(ax, data, dataset, title, confidence=False):
     """Orthographic view; points whose surface faces away are culled, the
-    rest drawn far to near."""
+    rest drawn far to near. Colored by the error, or by the confidence."""
     d = VIEWS.get(dataset, (1.0, 0.7, 0.5))
     norm = math.sqrt(sum(c * c for c in d))
     d = [c / norm for c in d]
@@ -382,13 +389,21 @@ def render(ax, data, dataset, title):
         t = outward(p)
         if orientation * sum(t[i] * d[i] for i in range(3)) > 0 or dataset == "corner":
             visible.append((sum(p[i] * d[i] for i in range(3)), sum(p[i] * right[i] for i in range(3)),
-                            sum(p[i] * up2[i] for i in range(3)), p[6]))
+                            sum(p[i] * up2[i] for i in range(3)), p[7] if confidence else p[6]))
     visible.sort()
     size = min(8.0, max(1.0, 25000.0 / max(1, len(visible))))  # dense enough to read as a surface
-    ax.scatter([v[1] for v in visible], [v[2] for v in visible], c=[error_color(v[3]) for v in visible],
-               s=size, linewidths=0)
+    if confidence:
+        values = sorted(p[7] for p in data)
+        top = max(1e-9, values[int(0.9 * (len(values) - 1))])
+        colors = [confidence_color(v[3], top) for v in visible]
+    else:
+        colors = [error_color(v[3]) for v in visible]
+    ax.scatter([v[1] for v in visible], [v[2] for v in visible], c=colors, s=size, linewidths=0)
     ax.set_aspect("equal")
     ax.axis("off")
+    if confidence:
+        ax.set_title("%s\nconfidence, dark = low" % title, fontsize=9)
+        return
     bad = sum(1 for p in data if p[6] > TAU)
     ax.set_title("%s\n%.1f%% above 10°" % (title, 100.0 * bad / max(1, len(data))), fontsize=9)
 
@@ -414,7 +429,36 @@ def renderings(scratch, out):
             render(ax, load_errors(path), "corner", name)
         fig.suptitle("Corner, densities 1:5:10, 0.2% noise (Fig. 11)", fontsize=10)
         made.append(save(fig, os.path.join(out, "fig11_corner.png")))
+    for dataset in ("cube", "cylinder", "fandisk", "corner"):
+        path = os.path.join(scratch, "confidence_%s.txt" % dataset)
+        if not os.path.exists(path):
+            continue
+        data = load_errors(path)
+        fig, axes = plt.subplots(1, 2, figsize=(10, 5))
+        render(axes[0], data, dataset, "RRHT_defaults_K100")
+        render(axes[1], data, dataset, "RRHT_defaults_K100", confidence=True)
+        fig.suptitle("%s, 0.2%% noise: angle error (blue→green 0–10°, red above) beside the confidence" % dataset,
+                     fontsize=10)
+        made.append(save(fig, os.path.join(out, "confidence_%s.png" % dataset)))
     return made
+
+
+def confidence_table(out):
+    """The table of confidence_auc.csv."""
+    path = os.path.join(out, "confidence_auc.csv")
+    if not os.path.exists(path):
+        return ""
+    with open(path, newline="") as f:
+        rows = [{k: (v if k == "dataset" else float(v)) for k, v in r.items()} for r in csv.DictReader(f)]
+    lines = ["| data | points | > 10° (%) | AUC of 1 − confidence for > 10° | points within 1% of an edge (%) | "
+             "median confidence there | median elsewhere | ratio | time with ÷ without the map |",
+             "|---|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        lines.append("| %s | %d | %.2f | %.3f | %.1f | %.3f | %.3f | %.2f | %.3f (%d rounds) |" % (
+            r["dataset"], r["points"], r["above10_percent"], r["auc"], r["near_edges_percent"],
+            r["median_near_edges"], r["median_elsewhere"], r["median_near_edges"] / max(1e-9, r["median_elsewhere"]),
+            r["time_with_confidence_over_without"], r["rounds"]))
+    return "\n".join(lines) + "\n"
 
 
 def summary(rows):
@@ -489,6 +533,9 @@ def main():
                                    "0.2% noise", split_by_dataset=True)
         elif name == "headline":
             images = [i for i in rendered if i.startswith("fig8")]
+        elif name == "confidence":
+            images = [i for i in rendered if i.startswith("confidence_")]
+            extra = confidence_table(out)
         if name == "fig13_anisotropy":
             images += [i for i in rendered if i.startswith("fig11")]
         for image in images:
