@@ -119,6 +119,7 @@ TITLES = {
     "real_scans": "Real scans without normals (../shared/data/scans): time and memory",
     "targets": "Performance targets (issues 5 and 16): 100k-point cube and 1M-point sphere, 0.2% noise; time against k",
     "scaling": "Time against the number of points at the fast setting (sphere, 0.2% noise)",
+    "adaptive": "The adaptive setting against the precise setting and RRHT_Cubes (100k points, 0.2% noise, 2 threads)",
     "confidence": "Confidence per point (confidence_map): does it predict the error? (100k points, 0.2% noise)",
 }
 
@@ -443,6 +444,27 @@ def renderings(scratch, out):
     return made
 
 
+def adaptive_table(out):
+    """The table of adaptive_errors.csv: errors over all points and near the edges."""
+    path = os.path.join(out, "adaptive_errors.csv")
+    if not os.path.exists(path):
+        return ""
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    lines = ["| data | estimator | time 2t (s) | > 10° (%) | RMS (°) | > 10° within 1% of an edge (%) |",
+             "|---|---|---|---|---|---|"]
+    for r in rows:
+        lines.append("| %s | %s | %.3f | %.2f | %.2f | %.2f (of %.1f%% of the points) |" % (
+            r["dataset"], r["estimator"], float(r["median_s"]), float(r["above10_percent"]), float(r["rms_deg"]),
+            float(r["above10_near_edges_percent"]), float(r["near_edges_percent"])))
+    times = os.path.join(out, "adaptive_time.csv")
+    if os.path.exists(times):
+        with open(times, newline="") as f:
+            lines += ["", "| time, measured in rounds (median of the ratios round by round) | ratio | rounds |", "|---|---|---|"]
+            lines += ["| %s | %.3f | %s |" % (r["ratio"], float(r["value"]), r["rounds"]) for r in csv.DictReader(f)]
+    return "\n".join(lines) + "\n"
+
+
 def confidence_table(out):
     """The table of confidence_auc.csv."""
     path = os.path.join(out, "confidence_auc.csv")
@@ -533,6 +555,8 @@ def main():
                                    "0.2% noise", split_by_dataset=True)
         elif name == "headline":
             images = [i for i in rendered if i.startswith("fig8")]
+        elif name == "adaptive":
+            extra = adaptive_table(out)
         elif name == "confidence":
             images = [i for i in rendered if i.startswith("confidence_")]
             extra = confidence_table(out)

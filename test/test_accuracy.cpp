@@ -194,3 +194,51 @@ TEST_CASE("Confidence on the fandisk mesh from the shared data", "[shared]")
   REQUIRE(sample_mesh(path, 30000, 21, cloud));
   check_confidence_predicts_errors("fandisk", cloud, 22);
 }
+
+namespace {
+// The adaptive setting on a shape with 0.2% noise: every normal is, bit for
+// bit, the normal of one of its plain settings at that point (the fast
+// setting, or the precise one with RRHT_Points or RRHT_Cubes), each of them
+// is used, and fewer normals are wrong than with the precise setting.
+void check_adaptive(const char* shape, Cloud cloud, unsigned int seed)
+{
+  add_noise(cloud, 0.2, seed);
+  auto run = [&](const auto& np) {
+    Cloud c = cloud;
+    CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(c, 100, np);
+    return c;
+  };
+  const Cloud adaptive = run(maps.adaptive(true));
+  const Cloud fast = run(maps.number_of_planes(300).number_of_rotations(2));
+  const Cloud precise = run(maps);
+  const Cloud cubes = run(maps.sampling(CGAL::RRHT::Sampling::CUBES));
+  std::size_t from_fast = 0, from_precise = 0, from_cubes = 0, from_none = 0;
+  for(std::size_t i = 0; i < cloud.size(); ++i)
+  {
+    const Vector& n = adaptive[i].normal;
+    from_fast += (n == fast[i].normal);
+    from_precise += (n != fast[i].normal && n == precise[i].normal);
+    from_cubes += (n != fast[i].normal && n != precise[i].normal && n == cubes[i].normal);
+    from_none += (n != fast[i].normal && n != precise[i].normal && n != cubes[i].normal);
+  }
+  const Errors a = errors(adaptive), p = errors(precise);
+  WARN(shape << ": adaptive " << 100 * a.share_above << "% above 10 degrees, precise " << 100 * p.share_above
+             << "%; normals from the fast setting " << from_fast << ", precise " << from_precise << ", Cubes "
+             << from_cubes);
+  CHECK(from_none == 0);
+  CHECK(from_precise > 0);
+  CHECK(from_cubes > 0);
+  CHECK(from_fast > cloud.size() / 2);
+  CHECK(a.share_above <= p.share_above);
+}
+} // namespace
+
+TEST_CASE("Adaptive setting: the normals of its plain settings, fewer wrong than the precise one (cube)", "[accuracy][adaptive]")
+{
+  check_adaptive("cube", cube(20000, 9), 23);
+}
+
+TEST_CASE("Adaptive setting: the normals of its plain settings, fewer wrong than the precise one (corner)", "[accuracy][adaptive]")
+{
+  check_adaptive("corner", anisotropic_corner(20000, 10), 24);
+}

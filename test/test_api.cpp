@@ -303,6 +303,17 @@ TEST_CASE("Same seed, same normals, bit for bit, whatever the concurrency and th
       CHECK(normals_of<SC>(parallel) == normals_of<SC>(sequential));
     }
   }
+  // The adaptive setting too.
+  Pair_cloud<SC> sequential = to_pairs<SC>(truth);
+  CGAL::rrht_estimate_normals<CGAL::Sequential_tag>(sequential, 50, params::extend(pair_maps<SC>).adaptive(true));
+  for(int threads : { 1, 2, 3 })
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    Pair_cloud<SC> parallel = to_pairs<SC>(truth);
+    CGAL::rrht_estimate_normals<CGAL::Parallel_tag>(parallel, 50, params::extend(pair_maps<SC>).adaptive(true));
+    INFO("adaptive, " << threads << " threads");
+    CHECK(normals_of<SC>(parallel) == normals_of<SC>(sequential));
+  }
 }
 #endif
 

@@ -42,6 +42,7 @@ def estimate_normals(
     aggregation: str = ...,
     cluster_angle: float = ...,
     seed: int = ...,
+    adaptive: bool = ...,
     threads: Optional[int] = ...,
     progress: bool = ...,
     return_confidence: Literal[False] = ...,
@@ -63,6 +64,7 @@ def estimate_normals(
     aggregation: str = ...,
     cluster_angle: float = ...,
     seed: int = ...,
+    adaptive: bool = ...,
     threads: Optional[int] = ...,
     progress: bool = ...,
     return_confidence: Literal[True],
@@ -83,6 +85,7 @@ def estimate_normals(
     aggregation: str = "cluster",
     cluster_angle: float = 45.0,
     seed: int = 0,
+    adaptive: bool = False,
     threads: Optional[int] = None,
     progress: bool = False,
     return_confidence: bool = False,
@@ -141,6 +144,14 @@ def estimate_normals(
         its own stream, derived from the seed and its row: the same input and
         seed give the same normals, bit for bit, as ``rrht_normals`` and
         ``CGAL::rrht_estimate_normals()``, whatever the number of threads.
+    adaptive : bool, default False
+        The adaptive setting (beyond the paper): every point is estimated
+        with the fast setting (at most 300 planes, 2 rotations), and where
+        that normal's confidence is below 0.09 again with ``planes`` and
+        ``rotations``, drawing spatially ("cubes", or "unif" if ``sampling``
+        is "unif") where it is below 0.045, as along sharp features. On
+        noisy CAD shapes: fewer wrong normals than the defaults in less than
+        half their time. ``sampling`` is otherwise ignored.
     threads : int, optional
         The number of threads for this call, 1 to 1024; default: all cores.
     progress : bool, default False
@@ -216,6 +227,7 @@ def estimate_normals(
         aggregation=_name(aggregation, AGGREGATIONS, "aggregation"),
         cluster_angle=float(cluster_angle),
         seed=_integer(seed, "seed"),
+        adaptive=bool(adaptive),
         threads=None if threads is None else _integer(threads, "threads"),
         return_confidence=bool(return_confidence),
     )

@@ -17,6 +17,7 @@ def estimate_normals(
     aggregation: str,
     cluster_angle: float,
     seed: int,
+    adaptive: bool,
     threads: Optional[int],
     return_confidence: bool,
     progress: Optional[Callable[[float], None]],

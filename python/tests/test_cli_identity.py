@@ -22,6 +22,8 @@ SETTINGS = [
      ["--radius", "0.05", "-k", "30", "--aggregation", "best", "--slices", "12"]),
     (dict(k=18, confidence_interval=False, cluster_angle=30.0, threads=1),
      ["-k", "18", "--no-confidence-interval", "--cluster-angle", "30", "--threads", "1"]),
+    (dict(adaptive=True), ["--adaptive"]),
+    (dict(adaptive=True, k=50, rotations=3, sampling="unif"), ["--adaptive", "-k", "50", "--rotations", "3", "--sampling", "unif"]),
 ]
 
 

@@ -113,6 +113,7 @@ def test_same_seed_same_normals_whatever_the_threads(fandisk):
         dict(radius=0.05, k=0, seed=7),
         dict(radius=0.05, k=30, aggregation="best", slices=12),
         dict(confidence_interval=False, planes=200, presampling=2, cluster_angle=30.0),
+        dict(adaptive=True),
     ],
 )
 def test_every_parameter_reaches_the_estimation(fandisk, parameters):

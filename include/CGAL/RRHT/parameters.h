@@ -28,7 +28,8 @@ namespace internal_np {
   X(presampling_factor_t, presampling_factor)                  \
   X(aggregation_t, aggregation)                                \
   X(cluster_angle_t, cluster_angle)                            \
-  X(confidence_map_t, confidence_map)
+  X(confidence_map_t, confidence_map)                          \
+  X(adaptive_t, adaptive)
 
 #define CGAL_RRHT_DECLARE_TAG(TAG, NAME) enum TAG { NAME };
 CGAL_RRHT_NAMED_PARAMETERS(CGAL_RRHT_DECLARE_TAG)
@@ -54,7 +55,7 @@ CGAL_RRHT_NAMED_PARAMETERS(CGAL_RRHT_DECLARE_TAG)
 /// - one per named parameter of RRHT: `number_of_planes()`,
 ///   `accumulator_slices()`, `number_of_rotations()`,
 ///   `use_confidence_interval()`, `sampling()`, `presampling_factor()`,
-///   `aggregation()`, `cluster_angle()` and `confidence_map()`.
+///   `aggregation()`, `cluster_angle()`, `confidence_map()` and `adaptive()`.
 ///
 /// The parameters that `CGAL::rrht_estimate_normals()` reads, their types
 /// and their defaults are listed in its documentation.
@@ -154,7 +155,7 @@ struct Named_function_parameters
 /// `neighbor_radius()`, ...) and one per named parameter of RRHT
 /// (`number_of_planes()`, `accumulator_slices()`, `number_of_rotations()`,
 /// `use_confidence_interval()`, `sampling()`, `presampling_factor()`,
-/// `aggregation()`, `cluster_angle()`, `confidence_map()`).
+/// `aggregation()`, `cluster_angle()`, `confidence_map()`, `adaptive()`).
 /// \ingroup PkgRRHTRef
 namespace parameters {
 

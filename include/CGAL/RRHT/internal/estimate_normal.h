@@ -14,6 +14,7 @@
 #include <CGAL/RRHT/internal/Random.h>
 #include <CGAL/RRHT/internal/Scratch.h>
 #include <CGAL/RRHT/internal/Settings.h>
+#include <CGAL/RRHT/internal/adaptive.h>
 #include <CGAL/RRHT/internal/aggregate.h>
 #include <CGAL/RRHT/internal/confidence.h>
 #include <CGAL/RRHT/internal/hough_transform.h>
@@ -60,22 +61,15 @@ Estimated_normal rotated_hough_transforms(const Neighborhood& neighborhood, Samp
   return Estimated_normal{ normal, confidence(scratch.candidates, normal, settings.cos_cluster_angle) };
 }
 
-/// The normal at the point at `position` in the search's order, the
-/// `input_index`-th of the input (Section 2): draws plane hypotheses in its
-/// neighborhood with n_rot randomly rotated accumulators and combines their
-/// winners. Returns the zero vector when no plane can be formed.
-inline Estimated_normal estimate_normal(std::size_t position, std::size_t input_index, const Neighbor_search& search,
-                                       const Settings& settings, Scratch& scratch)
+/// The normal of the neighborhood in `scratch.neighborhood`, of the point
+/// that is the `input_index`-th of the input, with `settings` (Section 2):
+/// draws plane hypotheses with n_rot randomly rotated accumulators and
+/// combines their winners.
+inline Estimated_normal estimate_normal_of_neighborhood(std::size_t input_index, const Settings& settings,
+                                                         Scratch& scratch)
 {
-  Neighborhood& neighborhood = scratch.neighborhood;
-  search.find(position, settings.k, settings.neighbor_radius, neighborhood, scratch.search);
+  const Neighborhood& neighborhood = scratch.neighborhood;
   const std::vector<Eigen::Vector3d>& points = neighborhood.points;
-  // Fewer than 3 distinct points, or a ball so small (a `neighbor_radius`
-  // below 1e-300) that the points cannot be scaled to the unit ball, nor to
-  // the grids of RRHT_Cubes and RRHT_Unif, without overflow.
-  if(points.size() < 3 || !(neighborhood.radius >= 1e-300))
-    return Estimated_normal{ Eigen::Vector3d::Zero(), 0. };
-
   // One random stream per point: the same normals whatever the threads.
   Random rng(settings.seed, input_index);
 
@@ -92,6 +86,31 @@ inline Estimated_normal estimate_normal(std::size_t position, std::size_t input_
     scratch.points.prepare(std::uint32_t(points.size()), settings.number_of_planes);
     return rotated_hough_transforms(neighborhood, scratch.points, rng, settings, scratch);
   }
+}
+
+/// The normal at the point at `position` in the search's order, the
+/// `input_index`-th of the input: with `settings`, or, if `stages` is not
+/// null, with the adaptive setting (`Adaptive_stages`). Returns the zero
+/// vector when no plane can be formed.
+inline Estimated_normal estimate_normal(std::size_t position, std::size_t input_index, const Neighbor_search& search,
+                                        const Settings& settings, Scratch& scratch,
+                                        const Adaptive_stages* stages = nullptr)
+{
+  Neighborhood& neighborhood = scratch.neighborhood;
+  search.find(position, settings.k, settings.neighbor_radius, neighborhood, scratch.search);
+  // Fewer than 3 distinct points, or a ball so small (a `neighbor_radius`
+  // below 1e-300) that the points cannot be scaled to the unit ball, nor to
+  // the grids of RRHT_Cubes and RRHT_Unif, without overflow.
+  if(neighborhood.points.size() < 3 || !(neighborhood.radius >= 1e-300))
+    return Estimated_normal{ Eigen::Vector3d::Zero(), 0. };
+  if(stages == nullptr)
+    return estimate_normal_of_neighborhood(input_index, settings, scratch);
+
+  const Estimated_normal cheap = estimate_normal_of_neighborhood(input_index, stages->cheap, scratch);
+  if(cheap.confidence >= Adaptive_stages::recheck_below)
+    return cheap;
+  return estimate_normal_of_neighborhood(
+    input_index, cheap.confidence < Adaptive_stages::spatial_below ? stages->spatial : stages->precise, scratch);
 }
 
 } // namespace internal
