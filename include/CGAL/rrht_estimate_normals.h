@@ -203,11 +203,12 @@ namespace CGAL {
                        `cluster_angle` of the returned normal. It is high where one plane holds the
                        neighborhood and its triples agree, and drops near sharp features, where triples
                        across them scatter their votes and the rotations disagree: a low value flags a
-                       normal to distrust (errors above 10 degrees on noisy CAD shapes have an area under
-                       the ROC curve above 0.9, see the user manual). Noise and finer accumulators spread
-                       the votes and lower it evenly: compare values within a cloud and a setting (about 0.15
-                       on the faces of a cube with 0.2% noise, 0.05 along its edges). A null normal has
-                       confidence 0. Computing it costs nothing measurable.}
+                       normal to distrust (for errors above 10 degrees on noisy CAD shapes, the area under
+                       the ROC curve of 1 - confidence is 0.94 to 0.99, see the user manual). Noise, finer
+                       accumulators and smaller neighborhoods spread the votes and lower it evenly: compare
+                       values within a cloud and a setting (on a cube of 100k points with 0.2% noise, with
+                       the defaults, the median is 0.16 on the faces and 0.04 within 1% of the diagonal of
+                       an edge). A null normal has confidence 0. Writing it costs no measurable time.}
      \cgalParamNEnd
 
      \cgalParamNBegin{adaptive}
