@@ -4,7 +4,7 @@
 // The adaptive setting (beyond the paper; its Section 7 proposes, as future
 // work, to draw cheaply by default and switch to the uniform drawing where
 // the estimation is known to be inaccurate). Measured in
-// benchmark/results/quick/targets.md.
+// benchmark/results/adaptive/adaptive.md.
 
 #ifndef CGAL_RRHT_INTERNAL_ADAPTIVE_H
 #define CGAL_RRHT_INTERNAL_ADAPTIVE_H

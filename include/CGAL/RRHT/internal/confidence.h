@@ -3,7 +3,7 @@
 //
 // How far to trust the normal at a point, from what its rotated
 // accumulators already know (beyond the paper; measured in
-// benchmark/results/quick/confidence.md).
+// benchmark/results/confidence/confidence.md).
 
 #ifndef CGAL_RRHT_INTERNAL_CONFIDENCE_H
 #define CGAL_RRHT_INTERNAL_CONFIDENCE_H
