@@ -552,26 +552,22 @@ void targets(const Config& config)
   t.print_and_write();
 }
 
-// -- The confidence per point (issue 18, beyond the paper): how well
-// 1 - confidence predicts the errors above 10 degrees (area under the ROC
-// curve) and how it drops near sharp edges, with the defaults on the noisy
-// cube, cylinder, fandisk and anisotropic corner (100k points, 0.2% noise,
-// 2 threads), and what writing it costs (in rounds against the same call
-// without it). Per-point errors and confidences go to the scratch folder
-// for the renderings; the figures to confidence_auc.csv.
-void confidence(const Config& config)
+// -- Issue 18's clouds: the noisy cube, cylinder, fandisk and anisotropic
+// corner (100k points, 0.2% noise), each with its points near a sharp edge
+// (within 1% of the diagonal, found on the clean cloud).
+struct Shape_with_edges
 {
-  Experiment x(config, "confidence");
+  Dataset dataset;
+  std::vector<bool> near_edges;
+};
+
+std::vector<Shape_with_edges> shapes_with_edges(const Config& config)
+{
   const std::size_t n = 100000;
-  struct Shape
-  {
-    Dataset dataset;
-    std::vector<bool> near_edges; // within 1% of the diagonal of a sharp edge, before the noise
-  };
-  std::vector<Shape> shapes;
+  std::vector<Shape_with_edges> shapes;
   auto add = [&](const std::string& name, Cloud clean, unsigned int seed) {
     const std::vector<bool> near = near_sharp_edges(clean, 0.01 * bounding_box_diagonal(clean));
-    shapes.push_back(Shape{ with_noise(name, std::move(clean), 0.2, seed), near });
+    shapes.push_back(Shape_with_edges{ with_noise(name, std::move(clean), 0.2, seed), near });
   };
   add("cube", cube(n, 1), 1);
   add("cylinder", closed_cylinder(n, 2), 2);
@@ -581,37 +577,61 @@ void confidence(const Config& config)
   else
     warn_missing(config.shared("meshes/fandisk.off"));
   add("corner", anisotropic_corner(n, 12), 12);
+  return shapes;
+}
 
+/// The errors (-1 without truth) and confidences of the `size` samples of a
+/// per-point file (`measure()`'s `errors_path`); false if it has fewer lines.
+bool read_per_point(const std::string& path, std::size_t size, std::vector<double>& errors,
+                    std::vector<double>& confidences)
+{
+  std::ifstream in(path);
+  errors.clear();
+  confidences.clear();
+  double x, y, z, tx, ty, tz, error, confidence;
+  while(errors.size() < size && (in >> x >> y >> z >> tx >> ty >> tz >> error >> confidence))
+  {
+    errors.push_back(error);
+    confidences.push_back(confidence);
+  }
+  return errors.size() == size;
+}
+
+// -- The confidence per point (issue 18, beyond the paper): how well
+// 1 - confidence predicts the errors above 10 degrees (area under the ROC
+// curve) and how it drops near sharp edges, with the defaults on issue 18's
+// clouds (2 threads), and what writing it costs (in rounds against the same
+// call without it). Per-point errors and confidences go to the scratch
+// folder for the renderings; the figures to confidence_auc.csv.
+void confidence(const Config& config)
+{
+  Experiment x(config, "confidence");
   std::ofstream csv(config.out + "/confidence_auc.csv");
   csv << "dataset,points,above10_percent,auc,near_edges_percent,median_near_edges,median_elsewhere,"
          "time_with_confidence_over_without,rounds\n";
   const Estimator without = rrht_defaults(rrht_k), with = rrht_defaults_with_confidence(rrht_k);
-  for(const Shape& shape : shapes)
+  for(const Shape_with_edges& shape : shapes_with_edges(config))
   {
     const Dataset& d = shape.dataset;
     const std::string file = "confidence_" + d.name + ".txt";
     x.run_with(d, with, 2, file);
     const std::vector<Measurement> timed = x.run_in_rounds({ { &d, with, 2 }, { &d, without, 2 } });
     // The file written by the first run: the cloud's samples in order.
-    Cloud scored = d.cloud;
-    std::ifstream in(config.scratch + "/" + file);
-    double px, py, pz, tx, ty, tz, error, confidence;
-    std::vector<bool> wrong;
-    std::size_t i = 0;
-    while(i < scored.size() && (in >> px >> py >> pz >> tx >> ty >> tz >> error >> confidence))
-    {
-      scored[i].confidence = confidence;
-      wrong.push_back(error > 10);
-      ++i;
-    }
-    if(i != scored.size())
+    std::vector<double> errors, confidences;
+    if(!read_per_point(config.scratch + "/" + file, d.cloud.size(), errors, confidences))
     {
       std::cout << d.name << ": no per-point confidences (" << config.scratch + "/" + file << ")" << std::endl;
       continue;
     }
+    Cloud scored = d.cloud;
     std::vector<double> score;
-    for(const Sample& s : scored)
-      score.push_back(1 - s.confidence);
+    std::vector<bool> wrong;
+    for(std::size_t i = 0; i < scored.size(); ++i)
+    {
+      scored[i].confidence = confidences[i];
+      score.push_back(1 - confidences[i]);
+      wrong.push_back(errors[i] > 10);
+    }
     const double auc = roc_auc(score, wrong);
     const double near = median_confidence(scored, shape.near_edges, true);
     const double elsewhere = median_confidence(scored, shape.near_edges, false);
@@ -630,33 +650,31 @@ void confidence(const Config& config)
 
 // -- The adaptive setting (issue 18, beyond the paper): its errors against
 // the precise setting (RRHT_Points, T_R = 691, n_rot = 5) and RRHT_Cubes on
-// the noisy cube, cylinder, fandisk and anisotropic corner (100k points,
-// 0.2% noise, 2 threads), over all points and within 1% of the diagonal of
-// a sharp edge; its time against jet fitting is in the targets. Writes
-// adaptive_errors.csv.
+// issue 18's clouds (2 threads), over all points and near a sharp edge, and
+// on the cube its time against jet fitting, the fast and the precise
+// settings, in rounds. Writes adaptive_errors.csv and adaptive_time.csv.
 void adaptive(const Config& config)
 {
   Experiment x(config, "adaptive");
-  const std::size_t n = 100000;
   std::ofstream csv(config.out + "/adaptive_errors.csv");
   csv << "dataset,points,estimator,median_s,above10_percent,rms_deg,near_edges_percent,above10_near_edges_percent\n";
-  auto measure_on = [&](const std::string& name, Cloud clean, unsigned int seed) {
-    const std::vector<bool> near = near_sharp_edges(clean, 0.01 * bounding_box_diagonal(clean));
-    const Dataset d = with_noise(name, std::move(clean), 0.2, seed);
-    const Rrht_setting precise = Rrht_setting::precise(), cubes = Rrht_setting::precise(Sampling::CUBES);
+  const Rrht_setting precise = Rrht_setting::precise(), cubes = Rrht_setting::precise(Sampling::CUBES);
+  for(const Shape_with_edges& shape : shapes_with_edges(config))
+  {
+    const Dataset& d = shape.dataset;
+    const std::vector<bool>& near = shape.near_edges;
     for(const Estimator& e : { rrht_adaptive(rrht_k), rrht(precise, rrht_k), rrht(cubes, rrht_k), jet(paper_k) })
     {
       const std::string file = "adaptive_" + d.name + "_" + e.name + ".txt";
       const Measurement m = x.run_with(d, e, 2, file);
       // The errors near the edges, from the per-point file of the first run.
-      std::ifstream in(config.scratch + "/" + file);
-      double v[8];
-      std::size_t i = 0, near_count = 0, near_wrong = 0;
-      while(i < near.size() && (in >> v[0] >> v[1] >> v[2] >> v[3] >> v[4] >> v[5] >> v[6] >> v[7]))
+      std::vector<double> errors, confidences;
+      read_per_point(config.scratch + "/" + file, d.cloud.size(), errors, confidences);
+      std::size_t near_count = 0, near_wrong = 0;
+      for(std::size_t i = 0; i < errors.size(); ++i)
       {
         near_count += near[i];
-        near_wrong += near[i] && v[6] > 10;
-        ++i;
+        near_wrong += near[i] && errors[i] > 10;
       }
       char line[512];
       std::snprintf(line, sizeof line, "%s,%zu,%s,%.4f,%.3f,%.3f,%.2f,%.3f", d.name.c_str(), d.cloud.size(),
@@ -667,7 +685,7 @@ void adaptive(const Config& config)
     if(d.name == "cube") // the time target, in rounds
     {
       const Estimator a = rrht_adaptive(rrht_k), j = jet(paper_k), f = rrht(Rrht_setting::fast(), rrht_k),
-                      p = rrht(Rrht_setting::precise(), rrht_k);
+                      p = rrht(precise, rrht_k);
       const std::vector<Measurement> m = x.run_in_rounds({ { &d, a, 2 }, { &d, j, 2 }, { &d, f, 2 }, { &d, p, 2 } });
       std::ofstream times(config.out + "/adaptive_time.csv");
       times << "ratio,value,rounds\n"
@@ -678,15 +696,7 @@ void adaptive(const Config& config)
                   ratio_by_rounds(m[0], m[1]), ratio_by_rounds(m[2], m[1]), ratio_by_rounds(m[3], m[1]),
                   m[0].seconds.size());
     }
-  };
-  measure_on("cube", cube(n, 1), 1);
-  measure_on("cylinder", closed_cylinder(n, 2), 2);
-  Cloud fandisk;
-  if(sample_mesh(config.shared("meshes/fandisk.off"), n, 3, fandisk))
-    measure_on("fandisk", std::move(fandisk), 3);
-  else
-    warn_missing(config.shared("meshes/fandisk.off"));
-  measure_on("corner", anisotropic_corner(n, 12), 12);
+  }
 }
 
 // -- Time against the number of points at the fast setting, against jet

@@ -197,6 +197,31 @@ inline Cloud anisotropic_corner(std::size_t n, unsigned int seed)
   });
 }
 
+/// A thin box (issue 18): the plate [-1,1]^2 x [-t/2, t/2], all six faces,
+/// uniformly over its area.
+inline Cloud thin_box(std::size_t n, double t, unsigned int seed)
+{
+  const double big = 4, side = 2 * t, total = 2 * big + 4 * side; // the areas of the faces
+  return generate(n, seed, [=](std::mt19937& rng, std::uniform_real_distribution<double>& u, Sample& s) {
+    const double f = u(rng) * total, x = 2 * u(rng) - 1, y = 2 * u(rng) - 1, z = (u(rng) - 0.5) * t;
+    if(f < 2 * big) { s.point = Point(x, y, f < big ? t / 2 : -t / 2); s.truth = Vector(0, 0, 1); return; }
+    const int face = (std::min)(int((f - 2 * big) / side), 3);
+    if(face < 2) { s.point = Point(face == 0 ? 1 : -1, y, z); s.truth = Vector(1, 0, 0); }
+    else { s.point = Point(x, face == 2 ? 1 : -1, z); s.truth = Vector(0, 1, 0); }
+  });
+}
+
+/// A bent sheet of thickness t (issue 18): a quarter of a cylinder of axis z,
+/// length 2, both sides (radii 1 - t/2 and 1 + t/2) equally sampled.
+inline Cloud bent_sheet(std::size_t n, double t, unsigned int seed)
+{
+  return generate(n, seed, [=](std::mt19937& rng, std::uniform_real_distribution<double>& u, Sample& s) {
+    const double a = u(rng) * pi / 2, z = 2 * u(rng) - 1, r = u(rng) < 0.5 ? 1 - t / 2 : 1 + t / 2;
+    s.point = Point(r * std::cos(a), r * std::sin(a), z);
+    s.truth = Vector(std::cos(a), std::sin(a), 0);
+  });
+}
+
 /// `n` points drawn uniformly over the area of a polygon mesh (faces
 /// fan-triangulated); the normal of the triangle a point is on is its truth.
 /// Returns false if the file cannot be read or has no area.

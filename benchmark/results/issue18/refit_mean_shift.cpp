@@ -11,39 +11,7 @@ namespace params = CGAL::RRHT::parameters;
 static double ang(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
 { return std::acos(std::min(1., std::abs(a.normalized().dot(b.normalized())))) * 180 / M_PI; }
 
-// Box [-1,1] x [-1,1] x [-t/2, t/2], uniformly over its area.
-Cloud thin_box(std::size_t n, double t, unsigned seed)
-{
-  std::mt19937 rng(seed); std::uniform_real_distribution<double> u(0, 1);
-  const double a_big = 4, a_side = 2 * t; // per face
-  const double total = 2 * a_big + 4 * a_side;
-  Cloud c(n);
-  for(auto& s : c)
-  {
-    double f = u(rng) * total, x = 2 * u(rng) - 1, y = 2 * u(rng) - 1, z = (u(rng) - 0.5) * t;
-    if(f < a_big) { s.point = Point(x, y, t / 2); s.truth = Vector(0, 0, 1); }
-    else if(f < 2 * a_big) { s.point = Point(x, y, -t / 2); s.truth = Vector(0, 0, 1); }
-    else { int side = int((f - 2 * a_big) / a_side); side = std::min(side, 3);
-      if(side == 0) { s.point = Point(1, y, z); s.truth = Vector(1, 0, 0); }
-      else if(side == 1) { s.point = Point(-1, y, z); s.truth = Vector(1, 0, 0); }
-      else if(side == 2) { s.point = Point(x, 1, z); s.truth = Vector(0, 1, 0); }
-      else { s.point = Point(x, -1, z); s.truth = Vector(0, 1, 0); } }
-  }
-  return c;
-}
-// A sheet bent into a quarter cylinder of radius 1, thickness t (both sides), length 2.
-Cloud bent_sheet(std::size_t n, double t, unsigned seed)
-{
-  std::mt19937 rng(seed); std::uniform_real_distribution<double> u(0, 1);
-  Cloud c(n);
-  for(auto& s : c)
-  {
-    double a = u(rng) * CGAL_PI / 2, z = 2 * u(rng) - 1, r = u(rng) < 0.5 ? 1 - t / 2 : 1 + t / 2;
-    s.point = Point(r * std::cos(a), r * std::sin(a), z); s.truth = Vector(std::cos(a), std::sin(a), 0);
-  }
-  return c;
-}
-
+// thin_box() and bent_sheet() are in test/shapes.h.
 int main(int argc, char** argv)
 {
   std::string which = argv[1];
