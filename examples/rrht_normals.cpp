@@ -225,6 +225,8 @@ int main(int argc, char** argv)
     ("no-confidence-interval", "do not stop early on disjoint confidence intervals (eq. 10)")
     ("adaptive", "the adaptive setting: the fast setting everywhere, estimated again with --planes and --rotations "
                  "where its confidence is low (beyond the paper)")
+    ("refit", "refit each normal by least squares (a quadric on the neighbors within the noise of its plane) "
+              "where the neighborhood is one smooth sheet: smooth surfaces, thin parts (beyond the paper)")
     ("seed", po::value<long long>()->default_value(0), "random seed (0 to 4294967295)")
     ("threads", po::value<long long>()->default_value(0, "all cores"), "number of threads (0 to 1024)")
     ("precision", po::value<long long>()->default_value(9),
@@ -286,6 +288,7 @@ int main(int argc, char** argv)
                       .accumulator_slices(options["slices"].as<long long>())
                       .use_confidence_interval(options.count("no-confidence-interval") == 0)
                       .adaptive(options.count("adaptive") > 0)
+                      .refit(options.count("refit") > 0)
                       .sampling(choice(options, "sampling", samplings))
                       .presampling_factor(options["presampling"].as<long long>())
                       .aggregation(choice(options, "aggregation", aggregations))

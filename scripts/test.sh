@@ -45,7 +45,8 @@ same_normals() { # build, reference build
     "--planes 300 --rotations 2 --sampling cubes"
     "--planes 300 --rotations 2 --sampling unif --aggregation mean"
     "--radius 0.05 -k 0 --seed 7"
-    "--radius 0.05 -k 30 --aggregation best --slices 12")
+    "--radius 0.05 -k 30 --aggregation best --slices 12"
+    "--refit --planes 300 --rotations 2")
   local i=0
   for run in "${runs[@]}"; do
     for build in "$1" "$2"; do

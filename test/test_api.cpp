@@ -303,17 +303,22 @@ TEST_CASE("Same seed, same normals, bit for bit, whatever the concurrency and th
       CHECK(normals_of<SC>(parallel) == normals_of<SC>(sequential));
     }
   }
-  // The adaptive setting too.
-  Pair_cloud<SC> sequential = to_pairs<SC>(truth);
-  CGAL::rrht_estimate_normals<CGAL::Sequential_tag>(sequential, 50, params::extend(pair_maps<SC>).adaptive(true));
-  for(int threads : { 1, 2, 3 })
-  {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-    Pair_cloud<SC> parallel = to_pairs<SC>(truth);
-    CGAL::rrht_estimate_normals<CGAL::Parallel_tag>(parallel, 50, params::extend(pair_maps<SC>).adaptive(true));
-    INFO("adaptive, " << threads << " threads");
-    CHECK(normals_of<SC>(parallel) == normals_of<SC>(sequential));
-  }
+  // The adaptive setting and the refit too.
+  auto check_setting = [&](const char* name, const auto& np) {
+    Pair_cloud<SC> sequential = to_pairs<SC>(truth);
+    CGAL::rrht_estimate_normals<CGAL::Sequential_tag>(sequential, 50, np);
+    for(int threads : { 1, 2, 3 })
+    {
+      tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+      Pair_cloud<SC> parallel = to_pairs<SC>(truth);
+      CGAL::rrht_estimate_normals<CGAL::Parallel_tag>(parallel, 50, np);
+      INFO(name << ", " << threads << " threads");
+      CHECK(normals_of<SC>(parallel) == normals_of<SC>(sequential));
+    }
+  };
+  check_setting("adaptive", params::extend(pair_maps<SC>).adaptive(true));
+  check_setting("refit", params::extend(pair_maps<SC>).refit(true));
+  check_setting("refit with a radius", params::extend(pair_maps<SC>).refit(true).neighbor_radius(0.3));
 }
 #endif
 
@@ -564,4 +569,58 @@ TEST_CASE("Bad input: a clear exception or a documented result, never NaN", "[ap
     CHECK(!has_nan(estimate(cloud, 10, maps.sampling(Sampling::UNIF).presampling_factor(32))));
     CHECK(!has_nan(estimate(cloud, 10, maps.sampling(Sampling::CUBES).presampling_factor(1).cluster_angle(0.))));
   }
+}
+
+TEST_CASE("Refit: degenerate neighborhoods keep the RRHT result, never NaN; progress still ends at 1", "[api][refit][bad-input]")
+{
+  typedef Point_with_normal<SC> PN;
+  auto estimate = [](Pair_cloud<SC> cloud, unsigned int k, const auto& np) {
+    CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(cloud, k, np);
+    return normals_of<SC>(cloud);
+  };
+  const auto maps = params::extend(pair_maps<SC>);
+  const SC::Vector_3 null(CGAL::NULL_VECTOR);
+
+  // Identical and collinear points: the null vector, as without the refit.
+  const Pair_cloud<SC> same(50, PN(SC::Point_3(1, 2, 3), SC::Vector_3(1, 1, 1)));
+  Pair_cloud<SC> line;
+  for(int i = 0; i < 50; ++i)
+    line.emplace_back(SC::Point_3(0.5 * i, 0, 0), SC::Vector_3(1, 1, 1));
+  for(const auto& normal : estimate(same, 10, maps.refit(true)))
+    CHECK(normal == null);
+  for(const auto& normal : estimate(line, 10, maps.refit(true)))
+    CHECK(normal == null);
+
+  // A noise-free plane, with a NaN point among it: the exact normal, with a
+  // noise deviation of 0 (the band's floor then applies), and the null vector
+  // at the NaN point.
+  Pair_cloud<SC> plane = to_pairs<SC>(rrht_test::plane(300, 4));
+  plane[5].first = SC::Point_3(std::numeric_limits<double>::quiet_NaN(), 0, 0);
+  const auto refitted = estimate(plane, 20, maps.refit(true));
+  CHECK(!has_nan(refitted));
+  for(std::size_t i = 0; i < refitted.size(); ++i)
+  {
+    if(i == 5)
+      CHECK(refitted[i] == null);
+    else
+      CHECK(std::abs(refitted[i].z()) == Approx(1).margin(1e-12));
+  }
+
+  // Fewer neighbors than the quadric's 6 unknowns: the RRHT normals stay.
+  const Pair_cloud<SC> cube = to_pairs<SC>(noisy_cube(500));
+  CHECK(estimate(cube, 4, maps.refit(true)) == estimate(cube, 4, maps));
+
+  // Two passes, one progress from 0 to 1.
+  std::vector<double> seen;
+  std::mutex mutex;
+  std::function<bool(double)> callback = [&](double advancement) {
+    std::lock_guard<std::mutex> lock(mutex);
+    seen.push_back(advancement);
+    return true;
+  };
+  estimate(cube, 30, maps.refit(true).callback(callback));
+  REQUIRE(!seen.empty());
+  CHECK(seen.back() == 1.);
+  for(double a : seen)
+    CHECK((a >= 0 && a <= 1));
 }

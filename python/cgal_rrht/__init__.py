@@ -43,6 +43,7 @@ def estimate_normals(
     cluster_angle: float = ...,
     seed: int = ...,
     adaptive: bool = ...,
+    refit: bool = ...,
     threads: Optional[int] = ...,
     progress: bool = ...,
     return_confidence: Literal[False] = ...,
@@ -65,6 +66,7 @@ def estimate_normals(
     cluster_angle: float = ...,
     seed: int = ...,
     adaptive: bool = ...,
+    refit: bool = ...,
     threads: Optional[int] = ...,
     progress: bool = ...,
     return_confidence: Literal[True],
@@ -86,6 +88,7 @@ def estimate_normals(
     cluster_angle: float = 45.0,
     seed: int = 0,
     adaptive: bool = False,
+    refit: bool = False,
     threads: Optional[int] = None,
     progress: bool = False,
     return_confidence: bool = False,
@@ -152,6 +155,13 @@ def estimate_normals(
         is "unif") where it is below 0.045, as along sharp features. On
         noisy CAD shapes: fewer wrong normals than the defaults in less than
         half their time. ``sampling`` is otherwise ignored.
+    refit : bool, default False
+        Refit each normal by least squares (beyond the paper): a quadric
+        height field over its plane, fitted to the neighbors within 2.5
+        noise deviations of it, replaces the RRHT normal where at most 5%
+        of the neighbors lie outside that band, as on smooth surfaces and
+        on thin parts, but not near sharp features. The noise deviation is
+        estimated from the point's neighbors. Costs a second pass.
     threads : int, optional
         The number of threads for this call, 1 to 1024; default: all cores.
     progress : bool, default False
@@ -228,6 +238,7 @@ def estimate_normals(
         cluster_angle=float(cluster_angle),
         seed=_integer(seed, "seed"),
         adaptive=bool(adaptive),
+        refit=bool(refit),
         threads=None if threads is None else _integer(threads, "threads"),
         return_confidence=bool(return_confidence),
     )

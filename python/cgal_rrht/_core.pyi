@@ -18,6 +18,7 @@ def estimate_normals(
     cluster_angle: float,
     seed: int,
     adaptive: bool,
+    refit: bool,
     threads: Optional[int],
     return_confidence: bool,
     progress: Optional[Callable[[float], None]],

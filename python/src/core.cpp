@@ -123,6 +123,7 @@ struct Options
   long long rotations, slices, presampling;
   bool confidence_interval;
   bool adaptive;
+  bool refit;
   CGAL::RRHT::Sampling sampling;
   CGAL::RRHT::Aggregation aggregation;
   double cluster_angle;
@@ -212,6 +213,7 @@ py::tuple estimate_normals(const py::array_t<double, py::array::c_style>& points
                     .accumulator_slices(options.slices)
                     .use_confidence_interval(options.confidence_interval)
                     .adaptive(options.adaptive)
+                    .refit(options.refit)
                     .sampling(options.sampling)
                     .presampling_factor(options.presampling)
                     .aggregation(options.aggregation)
@@ -242,7 +244,7 @@ PYBIND11_MODULE(_core, m)
     [](const py::array_t<double, py::array::c_style>& points, long long k, std::optional<double> radius,
        std::optional<long long> planes, long long rotations, long long slices, bool confidence_interval,
        const std::string& sampling, long long presampling, const std::string& aggregation, double cluster_angle,
-       long long seed, bool adaptive, std::optional<long long> threads, bool return_confidence,
+       long long seed, bool adaptive, bool refit, std::optional<long long> threads, bool return_confidence,
        const std::function<void(double)>& progress) {
       Options options;
       options.k = count<unsigned int>(k, "k");
@@ -266,6 +268,7 @@ PYBIND11_MODULE(_core, m)
       options.cluster_angle = cluster_angle;
       options.seed = count<unsigned int>(seed, "seed");
       options.adaptive = adaptive;
+      options.refit = refit;
       if(threads && (*threads < 1 || *threads > 1024)) // the bound of rrht_normals --threads
         throw py::value_error("threads must be from 1 to 1024, got " + std::to_string(*threads));
       options.threads = threads ? int(*threads) : 0;
@@ -274,7 +277,7 @@ PYBIND11_MODULE(_core, m)
     py::arg("points").noconvert(), py::arg("k"), py::arg("radius").none(true), py::arg("planes").none(true),
     py::arg("rotations"), py::arg("slices"), py::arg("confidence_interval"), py::arg("sampling"),
     py::arg("presampling"), py::arg("aggregation"), py::arg("cluster_angle"), py::arg("seed"),
-    py::arg("adaptive"), py::arg("threads").none(true), py::arg("return_confidence"), py::arg("progress").none(true),
+    py::arg("adaptive"), py::arg("refit"), py::arg("threads").none(true), py::arg("return_confidence"), py::arg("progress").none(true),
     "The estimation behind cgal_rrht.estimate_normals(), whose documentation says what each argument is.\n"
     "`points` is a C-contiguous float64 array (N, 3), read in place; `progress`, if not None, is called\n"
     "with the advancement (0 to 1). Returns the normals (N, 3) and, if `return_confidence`, their\n"

@@ -24,6 +24,8 @@ SETTINGS = [
      ["-k", "18", "--no-confidence-interval", "--cluster-angle", "30", "--threads", "1"]),
     (dict(adaptive=True), ["--adaptive"]),
     (dict(adaptive=True, k=50, rotations=3, sampling="unif"), ["--adaptive", "-k", "50", "--rotations", "3", "--sampling", "unif"]),
+    (dict(refit=True), ["--refit"]),
+    (dict(refit=True, adaptive=True, radius=0.05, k=30), ["--refit", "--adaptive", "--radius", "0.05", "-k", "30"]),
 ]
 
 

@@ -25,6 +25,31 @@ def test_noisy_cube_is_sharper_than_open3d():
     assert rrht_above < 0.05
 
 
+def test_refit_smooths_a_sphere_like_open3d_and_keeps_the_cube_sharp():
+    """refit=True: on a noisy sphere, errors near those of Open3D's PCA; on a noisy cube, edges kept."""
+    o3d = pytest.importorskip("open3d")
+    rng = np.random.default_rng(5)
+    sphere = rng.normal(size=(20000, 3))
+    sphere /= np.linalg.norm(sphere, axis=1, keepdims=True)
+    truth = sphere.copy()
+    sphere += rng.normal(scale=0.002 * np.sqrt(12.0), size=sphere.shape)  # 0.2% of the diagonal
+    rms = {}
+    for name, normals in (("rrht", cgal_rrht.estimate_normals(sphere)),
+                          ("refit", cgal_rrht.estimate_normals(sphere, refit=True))):
+        rms[name] = np.sqrt(np.mean(angle_errors_deg(normals, truth) ** 2))
+    pcd = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(sphere))
+    pcd.estimate_normals(o3d.geometry.KDTreeSearchParamKNN(80))
+    rms["open3d"] = np.sqrt(np.mean(angle_errors_deg(np.asarray(pcd.normals), truth) ** 2))
+    print("RMS (degrees):", rms)
+    assert rms["refit"] < 0.7 * rms["rrht"]
+    assert rms["refit"] < 1.2 * rms["open3d"]
+    points, cube_truth = noisy_cube(20000)
+    plain = np.mean(angle_errors_deg(cgal_rrht.estimate_normals(points), cube_truth) > 10)
+    refitted = np.mean(angle_errors_deg(cgal_rrht.estimate_normals(points, refit=True), cube_truth) > 10)
+    print(f"cube, share above 10 degrees: RRHT {plain:.2%}, with refit {refitted:.2%}")
+    assert refitted <= plain + 0.001
+
+
 def roc_auc(score, positive):
     """Area under the ROC curve of ``score`` as a predictor of ``positive`` (ties count one half)."""
     order = np.argsort(score, kind="stable")
@@ -114,6 +139,7 @@ def test_same_seed_same_normals_whatever_the_threads(fandisk):
         dict(radius=0.05, k=30, aggregation="best", slices=12),
         dict(confidence_interval=False, planes=200, presampling=2, cluster_angle=30.0),
         dict(adaptive=True),
+        dict(refit=True),
     ],
 )
 def test_every_parameter_reaches_the_estimation(fandisk, parameters):

@@ -29,7 +29,8 @@ namespace internal_np {
   X(aggregation_t, aggregation)                                \
   X(cluster_angle_t, cluster_angle)                            \
   X(confidence_map_t, confidence_map)                          \
-  X(adaptive_t, adaptive)
+  X(adaptive_t, adaptive)                                      \
+  X(refit_t, refit)
 
 #define CGAL_RRHT_DECLARE_TAG(TAG, NAME) enum TAG { NAME };
 CGAL_RRHT_NAMED_PARAMETERS(CGAL_RRHT_DECLARE_TAG)
@@ -55,7 +56,7 @@ CGAL_RRHT_NAMED_PARAMETERS(CGAL_RRHT_DECLARE_TAG)
 /// - one per named parameter of RRHT: `number_of_planes()`,
 ///   `accumulator_slices()`, `number_of_rotations()`,
 ///   `use_confidence_interval()`, `sampling()`, `presampling_factor()`,
-///   `aggregation()`, `cluster_angle()`, `confidence_map()` and `adaptive()`.
+///   `aggregation()`, `cluster_angle()`, `confidence_map()`, `adaptive()` and `refit()`.
 ///
 /// The parameters that `CGAL::rrht_estimate_normals()` reads, their types
 /// and their defaults are listed in its documentation.
@@ -155,7 +156,7 @@ struct Named_function_parameters
 /// `neighbor_radius()`, ...) and one per named parameter of RRHT
 /// (`number_of_planes()`, `accumulator_slices()`, `number_of_rotations()`,
 /// `use_confidence_interval()`, `sampling()`, `presampling_factor()`,
-/// `aggregation()`, `cluster_angle()`, `confidence_map()`, `adaptive()`).
+/// `aggregation()`, `cluster_angle()`, `confidence_map()`, `adaptive()`, `refit()`).
 /// \ingroup PkgRRHTRef
 namespace parameters {
 

@@ -38,6 +38,8 @@ struct Neighborhood
 {
   /// The neighbors, the point itself included, minus the point.
   std::vector<Eigen::Vector3d> points;
+  /// Their positions in the search's order (`Neighbor_search::input_index()`).
+  std::vector<std::size_t> positions;
   /// Radius of the ball centered on the point that holds all of `points`:
   /// the search radius, or the distance to the farthest neighbor kept when
   /// the neighborhood is a set of nearest neighbors. The small cubes and balls
@@ -143,6 +145,7 @@ public:
   {
     const Point& q = m_points[query].first;
     out.points.clear();
+    out.positions.clear();
     if(radius > 0)
     {
       if(k == 0)
@@ -156,7 +159,7 @@ public:
           // order of the tree traversal.
           std::sort(scratch.ball.begin(), scratch.ball.end());
           for(const auto& neighbor : scratch.ball)
-            out.points.push_back(relative(neighbor.second, q));
+            add(neighbor.second, q, out);
           out.radius = radius;
           return;
         }
@@ -187,7 +190,7 @@ public:
           if(!capped)
             std::sort(scratch.ball.begin(), scratch.ball.end());
           for(const auto& neighbor : scratch.ball)
-            out.points.push_back(relative(neighbor.second, q));
+            add(neighbor.second, q, out);
           out.radius = capped ? std::sqrt(farthest) : radius;
           return;
         }
@@ -201,7 +204,7 @@ public:
     double farthest = 0;
     for(const auto& neighbor : search)
     {
-      out.points.push_back(relative(neighbor.first, q));
+      add(neighbor.first, q, out);
       farthest = (std::max)(farthest, neighbor.second);
     }
     out.radius = std::sqrt(farthest);
@@ -218,10 +221,12 @@ private:
     void operator()(std::size_t i) const { ball->emplace_back(CGAL::squared_distance((*points)[i].first, *query), i); }
   };
 
-  Eigen::Vector3d relative(std::size_t i, const Point& q) const
+  // Adds the point at position `i` to `out`, relative to the query `q`.
+  void add(std::size_t i, const Point& q, Neighborhood& out) const
   {
     const Point& p = m_points[i].first;
-    return Eigen::Vector3d(p.x() - q.x(), p.y() - q.y(), p.z() - q.z());
+    out.points.emplace_back(p.x() - q.x(), p.y() - q.y(), p.z() - q.z());
+    out.positions.push_back(i);
   }
 
   std::vector<Indexed_point> m_points;   // along the Hilbert curve

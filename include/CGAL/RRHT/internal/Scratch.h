@@ -42,6 +42,8 @@ struct Scratch
   std::vector<Triple> triples; // a batch of draws
   Plane_batch planes;          // and their planes
   std::vector<Candidate_normal> candidates;
+  std::vector<Eigen::Vector3d> local; // the least-squares refit: the neighborhood in its frame,
+  std::vector<double> residuals, work; // the residuals and room to sort them
 };
 
 } // namespace internal
