@@ -124,6 +124,20 @@ inline Estimator rrht_defaults(const Neighborhood& n)
   return e;
 }
 
+/// The defaults with the least-squares refit (`refit(true)`):
+/// "RRHT_refit_K100".
+inline Estimator rrht_refit(const Neighborhood& n)
+{
+  Estimator e;
+  e.name = "RRHT_refit" + n.suffix();
+  e.rotations = 5;
+  e.estimate = [n](Cloud& cloud, unsigned int) {
+    CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(cloud, n.k,
+                                                                 sample_maps().neighbor_radius(n.radius).refit(true));
+  };
+  return e;
+}
+
 /// The adaptive setting (`adaptive(true)`, T_R = 691 and n_rot = 5 for the
 /// points estimated again): "RRHT_adaptive".
 inline Estimator rrht_adaptive(const Neighborhood& n)

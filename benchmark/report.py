@@ -120,6 +120,7 @@ TITLES = {
     "targets": "Performance targets (issues 5 and 16): 100k-point cube and 1M-point sphere, 0.2% noise; time against k",
     "scaling": "Time against the number of points at the fast setting (sphere, 0.2% noise)",
     "adaptive": "The adaptive setting against the precise setting and RRHT_Cubes (100k points, 0.2% noise, 2 threads)",
+    "refit": "The least-squares refit (refit=True) on smooth, sharp and thin clouds (100k points, 2 threads)",
     "confidence": "Confidence per point (confidence_map): does it predict the error? (100k points, 0.2% noise)",
 }
 
@@ -465,6 +466,27 @@ def adaptive_table(out):
     return "\n".join(lines) + "\n"
 
 
+def refit_table(rows):
+    """Side by side per cloud: RRHT's defaults without and with the refit, and jet fitting."""
+    by = {}
+    for r in rows:
+        by.setdefault("%s (%g%% noise)" % (r["dataset"], float(r["noise_percent"])), {})[r["estimator"]] = r
+    lines = ["| data | K | RRHT > 10° (%) / RMS (°) | with refit | jet_K80 | jet, same K | time with ÷ without refit |",
+             "|---|---|---|---|---|---|---|"]
+    for data, estimators in by.items():
+        for k in ("K30", "K100"):
+            plain, refit = estimators.get("RRHT_defaults_" + k), estimators.get("RRHT_refit_" + k)
+            if plain is None or refit is None:
+                continue
+            def cell(r):
+                return "—" if r is None else "%.2f / %.2f" % (float(r["above10_percent"]), float(r["rms_deg"]))
+            same_k = estimators.get("jet_" + k) if k != "K80" else None
+            lines.append("| %s | %s | %s | %s | %s | %s | %.2f |" % (
+                data, k[1:], cell(plain), cell(refit), cell(estimators.get("jet_K80")), cell(same_k),
+                float(refit["median_s"]) / float(plain["median_s"])))
+    return "\n".join(lines) + "\n"
+
+
 def confidence_table(out):
     """The table of confidence_auc.csv."""
     path = os.path.join(out, "confidence_auc.csv")
@@ -557,6 +579,8 @@ def main():
             images = [i for i in rendered if i.startswith("fig8")]
         elif name == "adaptive":
             extra = adaptive_table(out)
+        elif name == "refit":
+            extra = refit_table(rows)
         elif name == "confidence":
             images = [i for i in rendered if i.startswith("confidence_")]
             extra = confidence_table(out)
