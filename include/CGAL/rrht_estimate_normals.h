@@ -122,7 +122,9 @@ namespace CGAL {
        \cgalParamExtra{It is called after every block of 64 points with the current advancement (between 0. and
                        1.), and with 1. at the end. If it returns `true`, then the
                        algorithm continues its execution normally; if it returns
-                       `false`, the algorithm is stopped and the remaining normals are left unchanged.}
+                       `false`, the algorithm is stopped and the remaining normals are left unchanged (with
+                       `refit`, whose second pass is the second half of the advancement, the points that pass did not
+                       reach keep their RRHT normal).}
        \cgalParamExtra{The callback will be copied and therefore needs to be lightweight.}
        \cgalParamExtra{When `CGAL::Parallel_tag` is used, the `callback` is called from the worker threads,
                        one at a time, and shouldn't access or modify the variables that are parameters of the algorithm.}
@@ -244,8 +246,10 @@ namespace CGAL {
                        the deviations estimated at its neighbors (each from the nearest quarter of its residuals), at
                        least 0.4% of the neighborhood's radius. This removes the accumulator's quantization and the
                        scatter of the triples on smooth surfaces and on thin parts whose two sides are within the
-                       noise, without rounding edges (figures in the user manual). The confidence written is still
-                       that of the RRHT normal. The result stays the same for any number of threads.}
+                       noise, without rounding edges. On the benchmark's clouds (100k points, 0.2% noise) it took
+                       1.3 to 1.45 times as long as without, and lost no accuracy on those with sharp edges (figures
+                       in the user manual). The confidence written is still that of the RRHT normal. The result stays
+                       the same for any number of threads.}
      \cgalParamNEnd
    \cgalNamedParamsEnd
 
