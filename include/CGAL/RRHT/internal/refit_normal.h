@@ -36,7 +36,8 @@ struct Refit
 };
 
 /// The thresholds of the refit, chosen on the clouds of
-/// `benchmark/results/issue18` (README, section "refit").
+/// `benchmark/results/issue18` (its README: "The least-squares refit that
+/// landed").
 struct Refit_thresholds
 {
   /// Inliers lie within `band` noise deviations of the fitted surface.
@@ -91,6 +92,12 @@ inline Refit refit_normal(const std::vector<Eigen::Vector3d>& points, double rad
     residuals[i] = local[i].z();
   }
 
+  // The monomials of a quadric height field at a point of the frame.
+  auto monomials = [](const Eigen::Vector3d& p) {
+    Vector6 m;
+    m << 1, p.x(), p.y(), p.x() * p.x(), p.x() * p.y(), p.y() * p.y();
+    return m;
+  };
   Refit refit{ normal, noise, false };
   Vector6 quadric = Vector6::Zero();
   double band = 0; // over the radius
@@ -100,36 +107,20 @@ inline Refit refit_normal(const std::vector<Eigen::Vector3d>& points, double rad
     const double deviation = noise >= 0 ? noise / radius : noise_of_residuals(residuals, work);
     refit.noise = radius * (std::max)(deviation, T::least_noise);
     band = T::band * refit.noise / radius;
-    // The normal equations of the quadric from the moments of the inliers:
-    // sum of x^a y^b (a + b <= 4) and of h x^a y^b (a + b <= 2).
-    double mxy[5][5] = {}, mh[3][3] = {};
+    Eigen::Matrix<double, 6, 6> normal_matrix = Eigen::Matrix<double, 6, 6>::Zero();
+    Vector6 right_side = Vector6::Zero();
     inliers = 0;
     for(std::size_t i = 0; i < size; ++i)
       if(std::abs(residuals[i]) <= band)
       {
-        const double x = local[i].x(), y = local[i].y(), h = local[i].z();
-        const double px[5] = { 1, x, x * x, x * x * x, x * x * x * x };
-        const double py[5] = { 1, y, y * y, y * y * y, y * y * y * y };
-        for(int a = 0; a <= 4; ++a)
-          for(int b = 0; a + b <= 4; ++b)
-            mxy[a][b] += px[a] * py[b];
-        for(int a = 0; a <= 2; ++a)
-          for(int b = 0; a + b <= 2; ++b)
-            mh[a][b] += h * px[a] * py[b];
+        const Vector6 m = monomials(local[i]);
+        normal_matrix.selfadjointView<Eigen::Lower>().rankUpdate(m);
+        right_side += local[i].z() * m;
         ++inliers;
       }
-    static const int exponent[6][2] = { { 0, 0 }, { 1, 0 }, { 0, 1 }, { 2, 0 }, { 1, 1 }, { 0, 2 } };
-    Eigen::Matrix<double, 6, 6> normal_matrix;
-    Vector6 right_side;
-    for(int r = 0; r < 6; ++r)
-    {
-      for(int c = 0; c < 6; ++c)
-        normal_matrix(r, c) = mxy[exponent[r][0] + exponent[c][0]][exponent[r][1] + exponent[c][1]];
-      right_side[r] = mh[exponent[r][0]][exponent[r][1]];
-    }
     if(inliers < 6)
       return refit;
-    quadric = normal_matrix.ldlt().solve(right_side);
+    quadric = normal_matrix.selfadjointView<Eigen::Lower>().ldlt().solve(right_side);
     if(!quadric.allFinite())
       return refit;
     for(std::size_t i = 0; i < size; ++i)
