@@ -720,7 +720,7 @@ void refit(const Config& config)
   Dataset d;
   if(shared_mesh(config, "bunny00.off", "bunny00", n, 0.2, 3, d))
     compare(d, rrht_k);
-  for(const std::string& name : { "kitten", "bunny100k", "fandisk100k", "cube100k" })
+  for(const std::string name : { "kitten", "bunny100k", "fandisk100k", "cube100k" })
   {
     const bool given = name != "kitten"; // kitten.xyz holds its normals
     const std::string path = config.shared("points/" + name + ".xyz");
