@@ -480,9 +480,8 @@ def refit_table(rows):
                 continue
             def cell(r):
                 return "—" if r is None else "%.2f / %.2f" % (float(r["above10_percent"]), float(r["rms_deg"]))
-            same_k = estimators.get("jet_" + k) if k != "K80" else None
             lines.append("| %s | %s | %s | %s | %s | %s | %.2f |" % (
-                data, k[1:], cell(plain), cell(refit), cell(estimators.get("jet_K80")), cell(same_k),
+                data, k[1:], cell(plain), cell(refit), cell(estimators.get("jet_K80")), cell(estimators.get("jet_" + k)),
                 float(refit["median_s"]) / float(plain["median_s"])))
     return "\n".join(lines) + "\n"
 

@@ -92,6 +92,25 @@ rrht_test::Cloud noisy_cube(std::size_t n)
   return cloud;
 }
 
+// Runs `run(callback)` with a callback that records every advancement, and
+// checks that they lie in [0, 1] and end with 1.
+template <typename Run>
+void check_progress(Run run)
+{
+  std::vector<double> seen;
+  std::mutex mutex;
+  const std::function<bool(double)> callback = [&](double advancement) {
+    std::lock_guard<std::mutex> lock(mutex);
+    seen.push_back(advancement);
+    return true;
+  };
+  run(callback);
+  REQUIRE(!seen.empty());
+  CHECK(seen.back() == 1.);
+  for(double a : seen)
+    CHECK((a >= 0 && a <= 1));
+}
+
 bool has_nan(const std::vector<CGAL::Simple_cartesian<double>::Vector_3>& normals)
 {
   for(const auto& n : normals)
@@ -381,18 +400,9 @@ TEST_CASE("The callback reports progress, and returning false stops, leaving the
     // A full run: advancement in [0, 1], ending with 1.
     {
       Pair_cloud<SC> cloud = to_pairs<SC>(truth);
-      std::vector<double> seen;
-      std::mutex mutex;
-      std::function<bool(double)> callback = [&](double advancement) {
-        std::lock_guard<std::mutex> lock(mutex);
-        seen.push_back(advancement);
-        return true;
-      };
-      CGAL::rrht_estimate_normals<Tag>(cloud, 30, params::extend(pair_maps<SC>).callback(callback));
-      REQUIRE(!seen.empty());
-      CHECK(seen.back() == 1.);
-      for(double a : seen)
-        CHECK((a >= 0 && a <= 1));
+      check_progress([&](const std::function<bool(double)>& callback) {
+        CGAL::rrht_estimate_normals<Tag>(cloud, 30, params::extend(pair_maps<SC>).callback(callback));
+      });
     }
     // Interrupted at the first report, on a cloud large enough for TBB's
     // default partitioner to hand out ranges of thousands of points.
@@ -611,16 +621,5 @@ TEST_CASE("Refit: degenerate neighborhoods keep the RRHT result, never NaN; prog
   CHECK(estimate(cube, 4, maps.refit(true)) == estimate(cube, 4, maps));
 
   // Two passes, one progress from 0 to 1.
-  std::vector<double> seen;
-  std::mutex mutex;
-  std::function<bool(double)> callback = [&](double advancement) {
-    std::lock_guard<std::mutex> lock(mutex);
-    seen.push_back(advancement);
-    return true;
-  };
-  estimate(cube, 30, maps.refit(true).callback(callback));
-  REQUIRE(!seen.empty());
-  CHECK(seen.back() == 1.);
-  for(double a : seen)
-    CHECK((a >= 0 && a <= 1));
+  check_progress([&](const std::function<bool(double)>& callback) { estimate(cube, 30, maps.refit(true).callback(callback)); });
 }

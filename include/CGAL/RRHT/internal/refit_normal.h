@@ -53,6 +53,14 @@ struct Refit_thresholds
   static constexpr int iterations = 3;
 };
 
+/// The first quartile of `values`, which it reorders.
+inline double first_quartile(std::vector<double>& values)
+{
+  const auto quartile = values.begin() + std::ptrdiff_t(values.size() / 4);
+  std::nth_element(values.begin(), quartile, values.end());
+  return *quartile;
+}
+
 /// The noise deviation of residuals from the nearest quarter of their
 /// absolute values, which neighbors of another sheet do not reach: for a
 /// centered Gaussian, the first quartile of |x| is 0.3186 sigma.
@@ -60,9 +68,7 @@ inline double noise_of_residuals(const std::vector<double>& residuals, std::vect
 {
   work.resize(residuals.size());
   std::transform(residuals.begin(), residuals.end(), work.begin(), [](double x) { return std::abs(x); });
-  const auto quarter = work.begin() + std::ptrdiff_t(work.size() / 4);
-  std::nth_element(work.begin(), quarter, work.end());
-  return *quarter / 0.3186;
+  return first_quartile(work) / 0.3186;
 }
 
 /// Refits `normal` (unit) at a point whose neighbors, the point itself
@@ -152,9 +158,7 @@ inline double noise_of_neighbors(const std::vector<std::size_t>& positions, cons
   work.clear();
   for(std::size_t p : positions)
     work.push_back(noise[p]);
-  const auto quartile = work.begin() + std::ptrdiff_t(work.size() / 4);
-  std::nth_element(work.begin(), quartile, work.end());
-  return *quartile;
+  return first_quartile(work);
 }
 
 } // namespace internal
