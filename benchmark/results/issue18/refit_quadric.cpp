@@ -13,6 +13,17 @@
 //   SIG=         fixed noise deviation, as a share of the diagonal (an oracle)
 //   FRAMES=1     fits in the frame of the previous fit's normal
 //   CONF=0       refit only where the RRHT confidence is at least this
+// Added in the third session (all off by default, so the runs of refit_quadric.sh are unchanged):
+//   MODE=2       noise: the median of all points' own (one value for the cloud);
+//   MODE=3       the smaller of that and the QQ-th percentile of the neighbors' own
+//   QC=1         factor on the noise of MODE 1 to 3
+//   W=0          weights exp(-d^2 / 2 W^2) on the fit, d the distance to the point over the radius (0: none)
+//   PCAFRAME=1   first frame: the neighbors' PCA instead of the RRHT normal
+//   PCAIN=1      each fit in the frame of the PCA of the points in its band
+//   ALLIN=4      if every neighbor lies within ALLIN noise deviations of the fit, the normal of
+//                a quadric on all of them in the frame of their PCA (jet fitting's normal)
+//   SPLIT=1      errors of the points refitted and kept apart; RIM=1 the box's points above 10 degrees
+//                by distance to its rim; CONSIST=1 errors where the given normals agree (clean point sets)
 //   K=100 KJ=80 T=0.5 (thickness of box and sheet, % of the diagonal)
 //   HIST=1 histograms of the errors in 10-degree steps (RRHT, refit, jet); DIAG=1 the cube's points made worse
 // Usage: rq CLOUD NOISE_PERCENT, CLOUD one of sphere cube cylinder corner box
@@ -35,6 +46,17 @@ namespace params = CGAL::RRHT::parameters;
 static double ang(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
 { return std::acos(std::min(1., std::abs(a.normalized().dot(b.normalized())))) * 180 / M_PI; }
 static double env(const char* n, double d) { return getenv(n) ? atof(getenv(n)) : d; }
+static Eigen::Vector3d eig(const Vector& v) { return Eigen::Vector3d(v.x(), v.y(), v.z()); }
+// The normal of the least-squares plane of the points P[q] with keep(q) (their PCA).
+template <class Keep> static Eigen::Vector3d pca_normal(const std::vector<Eigen::Vector3d>& P, Keep keep)
+{
+  Eigen::Vector3d c = Eigen::Vector3d::Zero(); std::size_t n = 0;
+  for(std::size_t q = 0; q < P.size(); ++q) if(keep(q)) { c += P[q]; ++n; }
+  c /= double(n);
+  Eigen::Matrix3d C = Eigen::Matrix3d::Zero();
+  for(std::size_t q = 0; q < P.size(); ++q) if(keep(q)) C += (P[q] - c) * (P[q] - c).transpose();
+  return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(C).eigenvectors().col(0);
+}
 
 static bool load_points(const std::string& xyz, const std::string& normals, Cloud& c)
 {
@@ -91,10 +113,16 @@ int main(int argc, char** argv)
     radius[i] = std::sqrt(far); });
   std::vector<double> er(cloud.size()), ef(cloud.size()), ej(cloud.size()), sig(N, 0);
   std::vector<int> used(cloud.size());
+  const double wsig = env("W", 0), qc = env("QC", 1);
+  std::vector<double> noise_used(cloud.size(), 0); // the noise of each point's last fit
   struct S { std::vector<Eigen::Vector3d> P; std::vector<double> res, sorted, ss; std::vector<char> in; };
   tbb::enumerable_thread_specific<S> tls;
   const int mode2 = int(env("MODE", 0)); // 0: local sigma; 1: median of the neighbors' local sigmas
-  for(int pass = 0; pass < (mode2 ? 2 : 1); ++pass)
+  double global_sig = 0;
+  for(int pass = 0; pass < (mode2 ? 2 : 1); ++pass) {
+  if(pass == 1 && mode2 >= 2) {
+    std::vector<double> g = sig; std::nth_element(g.begin(), g.begin() + N / 2, g.end()); global_sig = g[N / 2] * qc;
+    std::printf("  the cloud's noise over the true one: %.3f\n", global_sig / (noise / 100 * diag)); }
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, N), [&](const tbb::blocked_range<std::size_t>& R) {
     S& sc = tls.local();
     for(std::size_t i = R.begin(); i < R.end(); ++i)
@@ -108,9 +136,11 @@ int main(int argc, char** argv)
       const auto& P = sc.P;
       const double rad = radius[i];
       double sfix = -1;
-      if(pass == 1) { sc.ss.clear(); for(std::size_t c = 0; c <= k; ++c) sc.ss.push_back(sig[nbr[i * (k + 1) + c]]); std::nth_element(sc.ss.begin(), sc.ss.begin() + sc.ss.size() * int(env("QQ", 50)) / 100, sc.ss.end()); sfix = sc.ss[sc.ss.size() * int(env("QQ", 50)) / 100]; }
+      if(pass == 1) { sc.ss.clear(); for(std::size_t c = 0; c <= k; ++c) sc.ss.push_back(sig[nbr[i * (k + 1) + c]]); std::nth_element(sc.ss.begin(), sc.ss.begin() + sc.ss.size() * int(env("QQ", 50)) / 100, sc.ss.end()); sfix = sc.ss[sc.ss.size() * int(env("QQ", 50)) / 100] * qc;
+        if(mode2 == 2) sfix = global_sig; if(mode2 == 3) sfix = std::min(sfix, global_sig); }
       n0.normalize();
       const Eigen::Vector3d n_rrht = n0;
+      if(getenv("PCAFRAME")) n0 = pca_normal(P, [](std::size_t) { return true; });
       for(int frame = 0; frame < int(env("FRAMES", 1)); ++frame) {
       Eigen::Vector3d u = n0.unitOrthogonal(), v = n0.cross(u);
       const std::size_t m = P.size();
@@ -125,18 +155,21 @@ int main(int argc, char** argv)
         std::nth_element(sc.sorted.begin(), sc.sorted.begin() + m / 4, sc.sorted.end());
         const double s = sfix >= 0 ? sfix : getenv("SIG") ? atof(getenv("SIG")) * diag : sc.sorted[m / 4] / 0.3186;
         if(pass == 0 && it == iters - 1) sig[i] = s; // robust sigma from the nearest quarter
+        noise_used[idx] = s;
         tau = std::max(kappa * s, env("FLOOR", 1e-9) * rad);
         Eigen::Matrix<double, 6, 6> A = Eigen::Matrix<double, 6, 6>::Zero();
         Eigen::Matrix<double, 6, 1> b = Eigen::Matrix<double, 6, 1>::Zero();
         cnt = 0;
+        if(getenv("PCAIN")) { n0 = pca_normal(P, [&](std::size_t q) { return std::abs(sc.res[q]) <= tau; }); u = n0.unitOrthogonal(); v = n0.cross(u); }
         for(std::size_t q = 0; q < m; ++q)
         {
           sc.in[q] = std::abs(sc.res[q]) <= tau;
           if(!sc.in[q]) continue;
           const double x = u.dot(P[q]) / rad, y = v.dot(P[q]) / rad, h = n0.dot(P[q]) / rad;
           Eigen::Matrix<double, 6, 1> f; f << 1, x, y, quad ? x * x : 0, quad ? x * y : 0, quad ? y * y : 0;
-          A.selfadjointView<Eigen::Lower>().rankUpdate(f);
-          b += h * f;
+          const double w = wsig > 0 ? std::exp(-0.5 * (x * x + y * y) / (wsig * wsig)) : 1.0;
+          A.selfadjointView<Eigen::Lower>().rankUpdate(f, w);
+          b += w * h * f;
           ++cnt;
         }
         if(cnt < 10) { ok = false; break; }
@@ -151,6 +184,14 @@ int main(int argc, char** argv)
       }
       if(!ok) break;
       Eigen::Vector3d nn = (n0 - a[1] * u - a[2] * v).normalized();
+      if(getenv("ALLIN"))
+      {
+        bool all = true; for(std::size_t q = 0; q < m; ++q) all = all && std::abs(sc.res[q]) <= env("ALLIN", 4) * tau / kappa;
+        if(all) { const Eigen::Vector3d w = pca_normal(P, [](std::size_t) { return true; }), wu = w.unitOrthogonal(), wv = w.cross(wu);
+          Eigen::Matrix<double, 6, 6> A = Eigen::Matrix<double, 6, 6>::Zero(); Eigen::Matrix<double, 6, 1> b = Eigen::Matrix<double, 6, 1>::Zero();
+          for(auto& q : P) { const double x = wu.dot(q) / rad, y = wv.dot(q) / rad; Eigen::Matrix<double, 6, 1> f; f << 1, x, y, x * x, x * y, y * y; A.selfadjointView<Eigen::Lower>().rankUpdate(f); b += w.dot(q) / rad * f; }
+          const Eigen::Matrix<double, 6, 1> g = A.selfadjointView<Eigen::Lower>().ldlt().solve(b); if(g.allFinite()) nn = (w - g[1] * wu - g[2] * wv).normalized(); }
+      }
       if(frame + 1 < int(env("FRAMES", 1))) { n0 = nn; continue; }
       n0 = n_rrht;
       const double out = 1 - double(cnt) / m;
@@ -161,13 +202,32 @@ int main(int argc, char** argv)
           std::printf("  worse: edge %.2f r, out %.3f, moved %.1f, rrht %.1f refit %.1f, tau/r %.3f, a0/tau %.2f, curv %.3f %.3f %.3f conf %.3f\n", de / rad, out, ang(nn, n0), er[idx], ef[idx], tau / rad, a[0] * rad / tau, a[3], a[4], a[5], r[idx].confidence); } }
       }
     }
-  });
+  }); }
   if(getenv("DIAG")) { std::size_t w = 0, b = 0; for(std::size_t i = 0; i < er.size(); ++i) { w += ef[i] > 10 && er[i] <= 10; b += ef[i] <= 10 && er[i] > 10; } std::printf("  worse %zu better %zu\n", w, b); }
   auto stats = [&](const char* name, const std::vector<double>& e) {
     double s = 0, a = 0; for(double x : e) { s += x * x; a += x > 10; }
     std::printf(" %s %5.2f%% %5.2f", name, 100 * a / e.size(), std::sqrt(s / e.size()));
   };
   if(getenv("HIST")) for(auto* e : {&er, &ef, &ej}) { int h[9] = {0}; for(double x : *e) h[std::min(8, int(x / 10))]++; for(int q = 0; q < 9; ++q) std::printf(" %6d", h[q]); std::printf("\n"); }
+  auto subset = [&](const char* name, auto&& keep) { // RMS of RRHT, refit and jet on a subset
+    double a = 0, b = 0, c = 0; std::size_t m = 0;
+    for(std::size_t i = 0; i < er.size(); ++i) if(keep(i)) { c += er[i] * er[i]; a += ef[i] * ef[i]; b += ej[i] * ej[i]; ++m; }
+    std::printf("  %-36s %6zu points: RMS rrht %5.2f refit %5.2f jet %5.2f\n", name, m, std::sqrt(c / m), std::sqrt(a / m), std::sqrt(b / m)); };
+  if(getenv("SPLIT") && noise > 0) { std::nth_element(noise_used.begin(), noise_used.begin() + N / 2, noise_used.end());
+    std::printf("  median of the points' noise over the true one: %.3f\n", noise_used[N / 2] / (noise / 100 * diag)); }
+  if(getenv("SPLIT")) { subset("refitted", [&](std::size_t i) { return used[i] == 1; }); subset("kept", [&](std::size_t i) { return used[i] == 0; }); }
+  if(getenv("CONSIST")) // the largest angle between a point's given normal and those of its 10 nearest neighbors
+  {
+    std::vector<double> spread(N, 0);
+    for(std::size_t i = 0; i < N; ++i) for(std::size_t c = 1; c <= std::min<std::size_t>(10, k); ++c)
+      spread[i] = std::max(spread[i], ang(eig(cloud[i].truth), eig(cloud[nbr[i * (k + 1) + c]].truth)));
+    subset("given normals within 20 deg of 10 nearest", [&](std::size_t i) { return spread[i] <= 20; });
+    subset("the others", [&](std::size_t i) { return spread[i] > 20; });
+  }
+  if(getenv("RIM")) { int h[6] = {0}, hj[6] = {0};
+    for(std::size_t i = 0; i < er.size(); ++i) { const double m = std::max(std::abs(cloud[i].point.x()), std::abs(cloud[i].point.y())); const int b = std::min(5, int((1 - m) / radius[i])); h[b] += ef[i] > 10; hj[b] += ej[i] > 10; }
+    std::printf("  above 10 deg by distance to the rim in radii 0, 1, ..., 5 and more: refit"); for(int q = 0; q < 6; ++q) std::printf(" %d", h[q]);
+    std::printf(", jet"); for(int q = 0; q < 6; ++q) std::printf(" %d", hj[q]); std::printf("\n"); }
   std::size_t uu = 0; for(int x : used) uu += x;
   std::printf("%-12s %.2f used %5.1f%% |", which.c_str(), noise, 100. * uu / used.size());
   stats("rrht", er); stats("refit", ef); stats("jet", ej); std::printf("\n");
