@@ -38,7 +38,6 @@ struct Config
   std::vector<unsigned int> headline_threads; // 1 and 2
   unsigned int timeout = 0;
   std::string out, data, scratch;
-  bool pcl = false;
 
   template <typename T>
   T pick(T quick, T full_mode) const { return full ? full_mode : quick; }
