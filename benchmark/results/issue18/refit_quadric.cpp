@@ -22,6 +22,7 @@
 //   PCAIN=1      each fit in the frame of the PCA of the points in its band
 //   ALLIN=4      if every neighbor lies within ALLIN noise deviations of the fit, the normal of
 //                a quadric on all of them in the frame of their PCA (jet fitting's normal)
+//   PLANES=300 ROT=2  the RRHT normals of another setting (here the paper's fast one)
 //   SPLIT=1      errors of the points refitted and kept apart; RIM=1 the box's points above 10 degrees
 //                by distance to its rim; CONSIST=1 errors where the given normals agree (clean point sets)
 //   K=100 KJ=80 T=0.5 (thickness of box and sheet, % of the diagonal)
@@ -95,7 +96,11 @@ int main(int argc, char** argv)
   if(noise > 0) add_noise(cloud, noise, seed + 1000);
   const double diag = bounding_box_diagonal(cloud);
   Cloud r = cloud, j = cloud;
-  CGAL::rrht_estimate_normals<CGAL::Parallel_tag>(r, k, params::point_map(Point_of_sample()).normal_map(Normal_of_sample()).confidence_map(Confidence_of_sample()));
+  if(getenv("PLANES")) // another RRHT setting, e.g. the paper's fast one: PLANES=300 ROT=2
+    CGAL::rrht_estimate_normals<CGAL::Parallel_tag>(r, k, params::point_map(Point_of_sample()).normal_map(Normal_of_sample()).confidence_map(Confidence_of_sample())
+      .number_of_planes(unsigned(env("PLANES", 0))).number_of_rotations(unsigned(env("ROT", 5))));
+  else
+    CGAL::rrht_estimate_normals<CGAL::Parallel_tag>(r, k, params::point_map(Point_of_sample()).normal_map(Normal_of_sample()).confidence_map(Confidence_of_sample()));
   CGAL::jet_estimate_normals<CGAL::Parallel_tag>(j, kj, params::point_map(Point_of_sample()).normal_map(Normal_of_sample()));
   typedef CGAL::Simple_cartesian<double>::Point_3 P3;
   std::vector<P3> pp; for(auto& s : cloud) pp.emplace_back(s.point.x(), s.point.y(), s.point.z());

@@ -24,3 +24,4 @@ run "the same, a band of 3 deviations" "FLOOR=0.01 MAXANG=20 MODE=3 QQ=50 PCAIN=
 run "landed, 1% thick" "$L T=1 KJ=100" "box 0.2" "sheet 0.2"
 run "MODE 3 with PCA frames and jet's normal, 1% thick" "FLOOR=0.01 MAXANG=20 MODE=3 QQ=50 PCAIN=1 ALLIN=4 T=1 KJ=100" "box 0.2" "sheet 0.2"
 run "landed, the clean point sets where their given normals agree and elsewhere" "$L CONSIST=1" "kitten 0" "bunny100k 0" "fandisk100k 0"
+run "the paper's fast setting (300 planes, 2 rotations) with the landed refit" "$L PLANES=300 ROT=2" "${seven[@]}" "cylinder 0.2"
