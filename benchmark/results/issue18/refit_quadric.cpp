@@ -22,6 +22,8 @@
 //   PCAIN=1      each fit in the frame of the PCA of the points in its band
 //   ALLIN=4      if every neighbor lies within ALLIN noise deviations of the fit, the normal of
 //                a quadric on all of them in the frame of their PCA (jet fitting's normal)
+//   KURT=2       ... and only if the kurtosis of their residuals is at least this
+//   KURTALL=2    keep the RRHT normal where the kurtosis of the residuals is below this
 //   PLANES=300 ROT=2  the RRHT normals of another setting (here the paper's fast one)
 //   SPLIT=1      errors of the points refitted and kept apart; RIM=1 the box's points above 10 degrees
 //                by distance to its rim; CONSIST=1 errors where the given normals agree (clean point sets)
@@ -48,6 +50,14 @@ static double ang(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
 { return std::acos(std::min(1., std::abs(a.normalized().dot(b.normalized())))) * 180 / M_PI; }
 static double env(const char* n, double d) { return getenv(n) ? atof(getenv(n)) : d; }
 static Eigen::Vector3d eig(const Vector& v) { return Eigen::Vector3d(v.x(), v.y(), v.z()); }
+// The kurtosis of the residuals r: 3 for noise, less for two sides d deviations
+// apart (3 - 2 (d/2)^4 / (1 + (d/2)^2)^2: 2.26 for d = 2.5, 1.51 for d = 5).
+static double kurtosis(const std::vector<double>& r)
+{
+  double mean = 0, m2 = 0, m4 = 0; for(double x : r) mean += x; mean /= double(r.size());
+  for(double x : r) { const double d2 = (x - mean) * (x - mean); m2 += d2; m4 += d2 * d2; }
+  return m4 * double(r.size()) / (m2 * m2);
+}
 // The normal of the least-squares plane of the points P[q] with keep(q) (their PCA).
 template <class Keep> static Eigen::Vector3d pca_normal(const std::vector<Eigen::Vector3d>& P, Keep keep)
 {
@@ -192,6 +202,7 @@ int main(int argc, char** argv)
       if(getenv("ALLIN"))
       {
         bool all = true; for(std::size_t q = 0; q < m; ++q) all = all && std::abs(sc.res[q]) <= env("ALLIN", 4) * tau / kappa;
+        if(getenv("KURT")) all = all && kurtosis(sc.res) >= env("KURT", 2);
         if(all) { const Eigen::Vector3d w = pca_normal(P, [](std::size_t) { return true; }), wu = w.unitOrthogonal(), wv = w.cross(wu);
           Eigen::Matrix<double, 6, 6> A = Eigen::Matrix<double, 6, 6>::Zero(); Eigen::Matrix<double, 6, 1> b = Eigen::Matrix<double, 6, 1>::Zero();
           for(auto& q : P) { const double x = wu.dot(q) / rad, y = wv.dot(q) / rad; Eigen::Matrix<double, 6, 1> f; f << 1, x, y, x * x, x * y, y * y; A.selfadjointView<Eigen::Lower>().rankUpdate(f); b += w.dot(q) / rad * f; }
@@ -200,6 +211,7 @@ int main(int argc, char** argv)
       if(frame + 1 < int(env("FRAMES", 1))) { n0 = nn; continue; }
       n0 = n_rrht;
       const double out = 1 - double(cnt) / m;
+      if(getenv("KURTALL") && kurtosis(sc.res) < env("KURTALL", 2)) continue; // two sides apart: keep RRHT's normal
       if(out * m <= max_out * m + env("SLACK", 0) && std::abs(a[0] * rad) <= tau && ang(nn, n0) <= maxang) { ef[idx] = ang(nn, t); used[idx] = 1;
         if(getenv("DIAG") && which == "cube" && ef[idx] > 10 && er[idx] <= 10) {
           double c[3] = {cloud[idx].point.x(), cloud[idx].point.y(), cloud[idx].point.z()}; int f = 0; for(int d = 1; d < 3; ++d) if(std::abs(c[d]) > std::abs(c[f])) f = d;
