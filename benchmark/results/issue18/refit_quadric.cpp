@@ -24,6 +24,7 @@
 //                a quadric on all of them in the frame of their PCA (jet fitting's normal)
 //   KURT=2       ... and only if the kurtosis of their residuals is at least this
 //   KURTALL=2    keep the RRHT normal where the kurtosis of the residuals is below this
+//   KAVG=1       for KURT and KURTALL, the median of the neighbors' kurtosis (first pass, MODE=1)
 //   PLANES=300 ROT=2  the RRHT normals of another setting (here the paper's fast one)
 //   SPLIT=1      errors of the points refitted and kept apart; RIM=1 the box's points above 10 degrees
 //                by distance to its rim; CONSIST=1 errors where the given normals agree (clean point sets)
@@ -130,6 +131,7 @@ int main(int argc, char** argv)
   std::vector<int> used(cloud.size());
   const double wsig = env("W", 0), qc = env("QC", 1);
   std::vector<double> noise_used(cloud.size(), 0); // the noise of each point's last fit
+  std::vector<double> own_kurtosis(cloud.size(), 3); // of the residuals of each point's first-pass fit
   struct S { std::vector<Eigen::Vector3d> P; std::vector<double> res, sorted, ss; std::vector<char> in; };
   tbb::enumerable_thread_specific<S> tls;
   const int mode2 = int(env("MODE", 0)); // 0: local sigma; 1: median of the neighbors' local sigmas
@@ -198,11 +200,14 @@ int main(int argc, char** argv)
         }
       }
       if(!ok) break;
+      if(pass == 0) own_kurtosis[idx] = kurtosis(sc.res);
+      double kurt = kurtosis(sc.res);
+      if(pass == 1 && getenv("KAVG")) { sc.ss.clear(); for(std::size_t c = 0; c <= k; ++c) sc.ss.push_back(own_kurtosis[nbr[i * (k + 1) + c]]); std::nth_element(sc.ss.begin(), sc.ss.begin() + sc.ss.size() / 2, sc.ss.end()); kurt = sc.ss[sc.ss.size() / 2]; }
       Eigen::Vector3d nn = (n0 - a[1] * u - a[2] * v).normalized();
       if(getenv("ALLIN"))
       {
         bool all = true; for(std::size_t q = 0; q < m; ++q) all = all && std::abs(sc.res[q]) <= env("ALLIN", 4) * tau / kappa;
-        if(getenv("KURT")) all = all && kurtosis(sc.res) >= env("KURT", 2);
+        if(getenv("KURT")) all = all && kurt >= env("KURT", 2);
         if(all) { const Eigen::Vector3d w = pca_normal(P, [](std::size_t) { return true; }), wu = w.unitOrthogonal(), wv = w.cross(wu);
           Eigen::Matrix<double, 6, 6> A = Eigen::Matrix<double, 6, 6>::Zero(); Eigen::Matrix<double, 6, 1> b = Eigen::Matrix<double, 6, 1>::Zero();
           for(auto& q : P) { const double x = wu.dot(q) / rad, y = wv.dot(q) / rad; Eigen::Matrix<double, 6, 1> f; f << 1, x, y, x * x, x * y, y * y; A.selfadjointView<Eigen::Lower>().rankUpdate(f); b += w.dot(q) / rad * f; }
@@ -211,7 +216,7 @@ int main(int argc, char** argv)
       if(frame + 1 < int(env("FRAMES", 1))) { n0 = nn; continue; }
       n0 = n_rrht;
       const double out = 1 - double(cnt) / m;
-      if(getenv("KURTALL") && kurtosis(sc.res) < env("KURTALL", 2)) continue; // two sides apart: keep RRHT's normal
+      if(getenv("KURTALL") && kurt < env("KURTALL", 2)) continue; // two sides apart: keep RRHT's normal
       if(out * m <= max_out * m + env("SLACK", 0) && std::abs(a[0] * rad) <= tau && ang(nn, n0) <= maxang) { ef[idx] = ang(nn, t); used[idx] = 1;
         if(getenv("DIAG") && which == "cube" && ef[idx] > 10 && er[idx] <= 10) {
           double c[3] = {cloud[idx].point.x(), cloud[idx].point.y(), cloud[idx].point.z()}; int f = 0; for(int d = 1; d < 3; ++d) if(std::abs(c[d]) > std::abs(c[f])) f = d;
