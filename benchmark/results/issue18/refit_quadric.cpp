@@ -59,6 +59,28 @@ static double kurtosis(const std::vector<double>& r)
   for(double x : r) { const double d2 = (x - mean) * (x - mean); m2 += d2; m4 += d2 * d2; }
   return m4 * double(r.size()) / (m2 * m2);
 }
+// The least-squares quadric height field h = a0 + a1 x + a2 y + a3 x^2 + a4 x y + a5 y^2
+// (a plane if !quad) in the frame (u, v, n), lengths over rad, of the points P[q] with
+// weight(q, x, y) > 0; count: how many.
+template <class Weight>
+static Eigen::Matrix<double, 6, 1> fit_quadric(const std::vector<Eigen::Vector3d>& P, const Eigen::Vector3d& n, const Eigen::Vector3d& u,
+                                               const Eigen::Vector3d& v, double rad, bool quad, std::size_t& count, Weight weight)
+{
+  Eigen::Matrix<double, 6, 6> A = Eigen::Matrix<double, 6, 6>::Zero();
+  Eigen::Matrix<double, 6, 1> b = Eigen::Matrix<double, 6, 1>::Zero();
+  count = 0;
+  for(std::size_t q = 0; q < P.size(); ++q)
+  {
+    const double x = u.dot(P[q]) / rad, y = v.dot(P[q]) / rad, h = n.dot(P[q]) / rad, w = weight(q, x, y);
+    if(w <= 0) continue;
+    Eigen::Matrix<double, 6, 1> f; f << 1, x, y, quad ? x * x : 0, quad ? x * y : 0, quad ? y * y : 0;
+    A.selfadjointView<Eigen::Lower>().rankUpdate(f, w);
+    b += w * h * f;
+    ++count;
+  }
+  if(!quad) for(int d = 3; d < 6; ++d) A(d, d) = 1;
+  return A.selfadjointView<Eigen::Lower>().ldlt().solve(b);
+}
 // The normal of the least-squares plane of the points P[q] with keep(q) (their PCA).
 template <class Keep> static Eigen::Vector3d pca_normal(const std::vector<Eigen::Vector3d>& P, Keep keep)
 {
@@ -132,7 +154,7 @@ int main(int argc, char** argv)
   const double wsig = env("W", 0), qc = env("QC", 1);
   std::vector<double> noise_used(cloud.size(), 0); // the noise of each point's last fit
   std::vector<double> own_kurtosis(cloud.size(), 3); // of the residuals of each point's first-pass fit
-  struct S { std::vector<Eigen::Vector3d> P; std::vector<double> res, sorted, ss; std::vector<char> in; };
+  struct S { std::vector<Eigen::Vector3d> P; std::vector<double> res, sorted, ss; };
   tbb::enumerable_thread_specific<S> tls;
   const int mode2 = int(env("MODE", 0)); // 0: local sigma; 1: median of the neighbors' local sigmas
   double global_sig = 0;
@@ -153,15 +175,19 @@ int main(int argc, char** argv)
       const auto& P = sc.P;
       const double rad = radius[i];
       double sfix = -1;
-      if(pass == 1) { sc.ss.clear(); for(std::size_t c = 0; c <= k; ++c) sc.ss.push_back(sig[nbr[i * (k + 1) + c]]); std::nth_element(sc.ss.begin(), sc.ss.begin() + sc.ss.size() * int(env("QQ", 50)) / 100, sc.ss.end()); sfix = sc.ss[sc.ss.size() * int(env("QQ", 50)) / 100] * qc;
-        if(mode2 == 2) sfix = global_sig; if(mode2 == 3) sfix = std::min(sfix, global_sig); }
+      // the percent-th percentile of the values of point i's neighbors (itself included)
+      auto neighbors_quantile = [&](const std::vector<double>& values, int percent) {
+        sc.ss.clear(); for(std::size_t c = 0; c <= k; ++c) sc.ss.push_back(values[nbr[i * (k + 1) + c]]);
+        std::nth_element(sc.ss.begin(), sc.ss.begin() + sc.ss.size() * percent / 100, sc.ss.end()); return sc.ss[sc.ss.size() * percent / 100]; };
+      if(pass == 1) { sfix = neighbors_quantile(sig, int(env("QQ", 50))) * qc;
+        sfix = mode2 == 2 ? global_sig : mode2 == 3 ? std::min(sfix, global_sig) : sfix; }
       n0.normalize();
       const Eigen::Vector3d n_rrht = n0;
       if(getenv("PCAFRAME")) n0 = pca_normal(P, [](std::size_t) { return true; });
       for(int frame = 0; frame < int(env("FRAMES", 1)); ++frame) {
       Eigen::Vector3d u = n0.unitOrthogonal(), v = n0.cross(u);
       const std::size_t m = P.size();
-      sc.res.resize(m); sc.in.assign(m, 0);
+      sc.res.resize(m);
       for(std::size_t q = 0; q < m; ++q) sc.res[q] = n0.dot(P[q]);
       Eigen::Matrix<double, 6, 1> a = Eigen::Matrix<double, 6, 1>::Zero();
       bool ok = true; std::size_t cnt = 0; double tau = 0;
@@ -174,25 +200,11 @@ int main(int argc, char** argv)
         if(pass == 0 && it == iters - 1) sig[i] = s; // robust sigma from the nearest quarter
         noise_used[idx] = s;
         tau = std::max(kappa * s, env("FLOOR", 1e-9) * rad);
-        Eigen::Matrix<double, 6, 6> A = Eigen::Matrix<double, 6, 6>::Zero();
-        Eigen::Matrix<double, 6, 1> b = Eigen::Matrix<double, 6, 1>::Zero();
-        cnt = 0;
         if(getenv("PCAIN")) { n0 = pca_normal(P, [&](std::size_t q) { return std::abs(sc.res[q]) <= tau; }); u = n0.unitOrthogonal(); v = n0.cross(u); }
-        for(std::size_t q = 0; q < m; ++q)
-        {
-          sc.in[q] = std::abs(sc.res[q]) <= tau;
-          if(!sc.in[q]) continue;
-          const double x = u.dot(P[q]) / rad, y = v.dot(P[q]) / rad, h = n0.dot(P[q]) / rad;
-          Eigen::Matrix<double, 6, 1> f; f << 1, x, y, quad ? x * x : 0, quad ? x * y : 0, quad ? y * y : 0;
-          const double w = wsig > 0 ? std::exp(-0.5 * (x * x + y * y) / (wsig * wsig)) : 1.0;
-          A.selfadjointView<Eigen::Lower>().rankUpdate(f, w);
-          b += w * h * f;
-          ++cnt;
-        }
-        if(cnt < 10) { ok = false; break; }
-        if(!quad) for(int d = 3; d < 6; ++d) A(d, d) = 1;
-        a = A.selfadjointView<Eigen::Lower>().ldlt().solve(b);
-        if(!a.allFinite()) { ok = false; break; }
+        a = fit_quadric(P, n0, u, v, rad, quad, cnt, [&](std::size_t q, double x, double y) {
+          if(std::abs(sc.res[q]) > tau) return 0.0;
+          return wsig > 0 ? std::exp(-0.5 * (x * x + y * y) / (wsig * wsig)) : 1.0; });
+        if(cnt < 10 || !a.allFinite()) { ok = false; break; }
         for(std::size_t q = 0; q < m; ++q)
         {
           const double x = u.dot(P[q]) / rad, y = v.dot(P[q]) / rad, h = n0.dot(P[q]) / rad;
@@ -200,18 +212,18 @@ int main(int argc, char** argv)
         }
       }
       if(!ok) break;
-      if(pass == 0) own_kurtosis[idx] = kurtosis(sc.res);
       double kurt = kurtosis(sc.res);
-      if(pass == 1 && getenv("KAVG")) { sc.ss.clear(); for(std::size_t c = 0; c <= k; ++c) sc.ss.push_back(own_kurtosis[nbr[i * (k + 1) + c]]); std::nth_element(sc.ss.begin(), sc.ss.begin() + sc.ss.size() / 2, sc.ss.end()); kurt = sc.ss[sc.ss.size() / 2]; }
+      if(pass == 0) own_kurtosis[idx] = kurt;
+      if(pass == 1 && getenv("KAVG")) kurt = neighbors_quantile(own_kurtosis, 50);
       Eigen::Vector3d nn = (n0 - a[1] * u - a[2] * v).normalized();
       if(getenv("ALLIN"))
       {
         bool all = true; for(std::size_t q = 0; q < m; ++q) all = all && std::abs(sc.res[q]) <= env("ALLIN", 4) * tau / kappa;
         if(getenv("KURT")) all = all && kurt >= env("KURT", 2);
         if(all) { const Eigen::Vector3d w = pca_normal(P, [](std::size_t) { return true; }), wu = w.unitOrthogonal(), wv = w.cross(wu);
-          Eigen::Matrix<double, 6, 6> A = Eigen::Matrix<double, 6, 6>::Zero(); Eigen::Matrix<double, 6, 1> b = Eigen::Matrix<double, 6, 1>::Zero();
-          for(auto& q : P) { const double x = wu.dot(q) / rad, y = wv.dot(q) / rad; Eigen::Matrix<double, 6, 1> f; f << 1, x, y, x * x, x * y, y * y; A.selfadjointView<Eigen::Lower>().rankUpdate(f); b += w.dot(q) / rad * f; }
-          const Eigen::Matrix<double, 6, 1> g = A.selfadjointView<Eigen::Lower>().ldlt().solve(b); if(g.allFinite()) nn = (w - g[1] * wu - g[2] * wv).normalized(); }
+          std::size_t all_count = 0;
+          const Eigen::Matrix<double, 6, 1> g = fit_quadric(P, w, wu, wv, rad, true, all_count, [](std::size_t, double, double) { return 1.0; });
+          if(g.allFinite()) nn = (w - g[1] * wu - g[2] * wv).normalized(); }
       }
       if(frame + 1 < int(env("FRAMES", 1))) { n0 = nn; continue; }
       n0 = n_rrht;

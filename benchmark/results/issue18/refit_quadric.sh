@@ -1,13 +1,7 @@
 #!/usr/bin/env bash
 # The runs of refit_quadric.cpp behind refit_quadric.txt (see README.md), from
 # the top folder of the repository, with the program built as /tmp/refit_quadric.
-set -u
-q=/tmp/refit_quadric
-run() { # label, environment, clouds...
-  local label=$1 environment=$2; shift 2
-  echo "== $label: $environment"
-  for cloud in "$@"; do env $environment $q $cloud; done
-}
+source "$(dirname "$0")/refit_run.sh"
 smooth_sharp_thin=("sphere 0.2" "bunny00 0.2" "cube 0.2" "fandisk 0.2" "corner 0.2" "box 0.2")
 run "the point's own noise, a plane" "QUAD=0" "${smooth_sharp_thin[@]}"
 run "the point's own noise, a quadric" "QUAD=1" "${smooth_sharp_thin[@]}"

@@ -1,13 +1,7 @@
 #!/usr/bin/env bash
 # The runs of the third session behind refit_variants.txt (see README.md), from
 # the top folder of the repository, with refit_quadric.cpp built as /tmp/refit_quadric.
-set -u
-q=/tmp/refit_quadric
-run() { # label, environment, clouds...
-  local label=$1 environment=$2; shift 2
-  echo "== $label: $environment"
-  for cloud in "$@"; do env $environment $q $cloud; done
-}
+source "$(dirname "$0")/refit_run.sh"
 L="MODE=1 QQ=25 FLOOR=0.01 MAXANG=20" # refit(true) as it landed
 seven=("sphere 0.2" "bunny00 0.2" "cube 0.2" "fandisk 0.2" "corner 0.2" "box 0.2" "sheet 0.2")
 run "landed: which points are refitted, which keep RRHT's normal" "$L SPLIT=1" "sphere 0.2" "bunny00 0.2" "corner 0.2"
