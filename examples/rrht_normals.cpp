@@ -225,8 +225,9 @@ int main(int argc, char** argv)
     ("no-confidence-interval", "do not stop early on disjoint confidence intervals (eq. 10)")
     ("adaptive", "the adaptive setting: the fast setting everywhere, estimated again with --planes and --rotations "
                  "where its confidence is low (beyond the paper)")
-    ("refit", "refit each normal by least squares (a quadric on the neighbors within the noise of its plane) "
-              "where the neighborhood is one smooth sheet: smooth surfaces, thin parts (beyond the paper)")
+    ("refit", "refit each normal by least squares (a quadric on the neighbors within the noise of its plane, "
+              "or two parallel planes) where the neighborhood is one smooth sheet or the two sides of a thin part "
+              "(beyond the paper)")
     ("seed", po::value<long long>()->default_value(0), "random seed (0 to 4294967295)")
     ("threads", po::value<long long>()->default_value(0, "all cores"), "number of threads (0 to 1024)")
     ("precision", po::value<long long>()->default_value(9),

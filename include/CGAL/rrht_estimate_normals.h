@@ -234,22 +234,29 @@ namespace CGAL {
      \cgalParamNEnd
 
      \cgalParamNBegin{refit}
-       \cgalParamDescription{whether to refit each normal by least squares where its neighborhood is one smooth sheet
-                             (beyond the paper)}
+       \cgalParamDescription{whether to refit each normal by least squares where its neighborhood is one smooth sheet,
+                             or the two parallel sides of a thin part (beyond the paper)}
        \cgalParamType{bool}
        \cgalParamDefault{`false`}
        \cgalParamExtra{After the Hough transform, a second pass fits, by least squares, a quadric height field over the
                        plane of the RRHT normal (as jet fitting does) to the neighbors within 2.5 noise deviations of
-                       it, three times, and keeps the fitted normal where at most 5% of the neighbors lie outside that
-                       band, the point lies within it and the normal turns by at most 20 degrees; elsewhere, as near
-                       sharp features, the RRHT normal stays. The noise deviation at a point is the first quartile of
-                       the deviations estimated at its neighbors (each from the nearest quarter of its residuals), at
-                       least 0.4% of the neighborhood's radius. This removes the accumulator's quantization and the
-                       scatter of the triples on smooth surfaces and on thin parts whose two sides are within the
-                       noise, without rounding edges. On the benchmark's clouds (100k points, 0.2% noise) it took
-                       1.3 to 1.45 times as long as without, and lost no accuracy on those with sharp edges (figures
-                       in the user manual). The confidence written is still that of the RRHT normal. The result stays
-                       the same for any number of threads.}
+                       it, three times. The noise deviation at a point is the first quartile of the deviations
+                       estimated at its neighbors (each from the nearest quarter of its residuals), at least 0.4% of
+                       the neighborhood's radius. Where the neighborhood is two parallel sheets (its heights split
+                       in two by 1D 2-means, one plane with one more offset for the other sheet fitted to them three
+                       times) at least 4 deviations of their residuals apart, the smaller holding at least 25% of the
+                       neighbors and lying under the point, each sheet within 10 degrees of parallel, with at most 5%
+                       of the neighbors outside the band and the point within it, their normal is kept. Else, where
+                       at most 5% of the neighbors lie outside the band of the quadric and the point lies within
+                       it, the quadric's normal is kept, or, where every neighbor lies within 3 noise deviations of
+                       the quadric, that of a quadric fitted to all of them in the frame of their principal axes (as
+                       jet fitting does). The normal may turn by at most 20 degrees. Elsewhere, as near sharp
+                       features, the RRHT normal stays.
+                       This removes the accumulator's quantization and the scatter of the triples on smooth surfaces
+                       and on thin parts, without rounding edges. On the benchmark's clouds (100k points, 0.2% noise)
+                       it took 1.9 to 2.2 times as long as without, and lost no accuracy on those with sharp edges
+                       (figures in the user manual). The confidence written is still that of the RRHT normal. The
+                       result stays the same for any number of threads.}
      \cgalParamNEnd
    \cgalNamedParamsEnd
 
@@ -375,8 +382,8 @@ void rrht_estimate_normals(PointRange& points,
         rrht_normals[i] = e.normal;
         noise[i] = e.normal == Eigen::Vector3d::Zero()
                      ? std::numeric_limits<double>::infinity()
-                     : RRHT::internal::refit_normal(scratch.neighborhood.points, scratch.neighborhood.radius, e.normal,
-                                                    -1, scratch.local, scratch.residuals, scratch.work).noise;
+                     : RRHT::internal::fit_one_sheet(scratch.neighborhood.points, scratch.neighborhood.radius, e.normal,
+                                                     -1, scratch.refit).noise;
       }
     }
   };
@@ -390,15 +397,14 @@ void rrht_estimate_normals(PointRange& points,
         continue;
       RRHT::internal::Neighborhood& neighborhood = scratch.neighborhood;
       search.find(i, settings.k, settings.neighbor_radius, neighborhood, scratch.search);
-      const double deviation = RRHT::internal::noise_of_neighbors(neighborhood.positions, noise, scratch.work);
+      const double deviation = RRHT::internal::noise_of_neighbors(neighborhood.positions, noise, scratch.refit.work);
       if(!std::isfinite(deviation))
         continue;
-      const RRHT::internal::Refit r = RRHT::internal::refit_normal(neighborhood.points, neighborhood.radius,
-                                                                   rrht_normals[i], deviation, scratch.local,
-                                                                   scratch.residuals, scratch.work);
-      if(r.accepted)
+      const Eigen::Vector3d refitted = RRHT::internal::refit_normal(neighborhood.points, neighborhood.radius,
+                                                                    rrht_normals[i], deviation, scratch.refit);
+      if(refitted != Eigen::Vector3d::Zero())
         put(normal_map, *elements.at(points.begin(), search.input_index(i)),
-            Vector_3(FT(r.normal.x()), FT(r.normal.y()), FT(r.normal.z())));
+            Vector_3(FT(refitted.x()), FT(refitted.y()), FT(refitted.z())));
     }
   };
 

@@ -159,8 +159,9 @@ def estimate_normals(
         Refit each normal by least squares (beyond the paper): a quadric
         height field over its plane, fitted to the neighbors within 2.5
         noise deviations of it, replaces the RRHT normal where at most 5%
-        of the neighbors lie outside that band, as on smooth surfaces and
-        on thin parts, but not near sharp features. The noise deviation is
+        of the neighbors lie outside that band, as on smooth surfaces, and
+        two parallel planes where the neighborhood is the two sides of a
+        thin part, but not near sharp features. The noise deviation is
         estimated from the point's neighbors. Costs a second pass.
     threads : int, optional
         The number of threads for this call, 1 to 1024; default: all cores.

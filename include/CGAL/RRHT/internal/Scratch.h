@@ -16,6 +16,7 @@
 #include <CGAL/RRHT/internal/Triple.h>
 #include <CGAL/RRHT/internal/Unif_sampler.h>
 #include <CGAL/RRHT/internal/aggregate.h>
+#include <CGAL/RRHT/internal/refit_normal.h>
 
 #include <Eigen/Core>
 
@@ -42,8 +43,7 @@ struct Scratch
   std::vector<Triple> triples; // a batch of draws
   Plane_batch planes;          // and their planes
   std::vector<Candidate_normal> candidates;
-  std::vector<Eigen::Vector3d> local; // the least-squares refit: the neighborhood in its frame,
-  std::vector<double> residuals, work; // the residuals and room to sort them
+  Refit_scratch refit;
 };
 
 } // namespace internal
