@@ -13,6 +13,8 @@
 #ifndef CGAL_RRHT_INTERNAL_REFIT_NORMAL_H
 #define CGAL_RRHT_INTERNAL_REFIT_NORMAL_H
 
+#include <CGAL/number_type_config.h>
+
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
@@ -152,10 +154,10 @@ Eigen::Vector3d principal_normal(const std::vector<Eigen::Vector3d>& points, Use
   return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance).eigenvectors().col(0);
 }
 
-/// The angle between two unit directions, in degrees, sign ignored.
-inline double angle_between(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
+/// Whether two unit directions, sign ignored, are at most `degrees` apart.
+inline bool within_angle(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double degrees)
 {
-  return std::acos((std::min)(1.0, std::abs(a.dot(b)))) * 180 / 3.14159265358979323846;
+  return std::abs(a.dot(b)) >= std::cos(degrees * CGAL_PI / 180);
 }
 
 /// The outcome of `fit_one_sheet()`.
@@ -285,7 +287,7 @@ inline Eigen::Vector3d fit_two_sheets(const std::vector<Eigen::Vector3d>& points
      spread[1] * double(size - other) > spread[0] * double(other))
     return none;
   for(unsigned char side = 0; side < 2; ++side)
-    if(angle_between(principal_normal(points, [&](std::size_t i) { return sheet[i] == side; }), normal) > T::parallel)
+    if(!within_angle(principal_normal(points, [&](std::size_t i) { return sheet[i] == side; }), normal, T::parallel))
       return none;
   return normal;
 }
@@ -309,7 +311,7 @@ inline Eigen::Vector3d refit_normal(const std::vector<Eigen::Vector3d>& points, 
   const Eigen::Vector3d none = Eigen::Vector3d::Zero();
   const std::size_t size = points.size();
   auto turned = [&](const Eigen::Vector3d& n) {
-    return n.allFinite() && n != none && angle_between(n, normal) <= T::largest_turn ? n : none;
+    return n.allFinite() && n != none && within_angle(n, normal, T::largest_turn) ? n : none;
   };
 
   const One_sheet one = fit_one_sheet(points, radius, normal, noise, scratch);
