@@ -19,13 +19,17 @@
 #include <tbb/task_arena.h>
 #endif
 
+#include <algorithm>
 #include <atomic>
+#include <cstdint>
 #include <cmath>
 #include <cstdlib>
 #include <functional>
 #include <limits>
 #include <list>
 #include <mutex>
+#include <random>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -622,4 +626,192 @@ TEST_CASE("Refit: degenerate neighborhoods keep the RRHT result, never NaN; prog
 
   // Two passes, one progress from 0 to 1.
   check_progress([&](const std::function<bool(double)>& callback) { estimate(cube, 30, maps.refit(true).callback(callback)); });
+}
+
+namespace {
+
+// A point with what the estimation writes, and a stable id.
+typedef std::tuple<SC::Point_3, SC::Vector_3, std::uint64_t, double, double> Identified; // point, normal, id, support, confidence
+const auto identified_maps = params::point_map(CGAL::Nth_of_tuple_property_map<0, Identified>())
+                               .normal_map(CGAL::Nth_of_tuple_property_map<1, Identified>())
+                               .point_id_map(CGAL::Nth_of_tuple_property_map<2, Identified>())
+                               .support_radius_map(CGAL::Nth_of_tuple_property_map<3, Identified>())
+                               .confidence_map(CGAL::Nth_of_tuple_property_map<4, Identified>());
+
+std::vector<Identified> identified(const std::vector<SC::Point_3>& points)
+{
+  std::vector<Identified> out;
+  for(std::size_t i = 0; i < points.size(); ++i)
+    out.emplace_back(points[i], CGAL::NULL_VECTOR, std::uint64_t(i), -1., -1.);
+  return out;
+}
+
+// Runs `estimate` on the whole cloud and on the points with x < `cut`, in
+// another order, and checks that every point of the part whose support lies
+// in it (distance to the plane x = cut above the support radius, with a
+// margin for rounding) has the same normal, confidence and support, bit for
+// bit. Returns the share of the part's points so checked.
+template <typename Estimate>
+double check_part_against_whole(const std::vector<SC::Point_3>& points, double cut, Estimate estimate)
+{
+  std::vector<Identified> whole = identified(points), part;
+  estimate(whole);
+  for(const Identified& e : identified(points))
+    if(std::get<0>(e).x() < cut)
+      part.push_back(e);
+  std::shuffle(part.begin(), part.end(), std::mt19937(5)); // the order of the range does not matter
+  estimate(part);
+  std::size_t checked = 0;
+  for(const Identified& e : part)
+  {
+    const double support = std::get<3>(e);
+    REQUIRE(support >= 0);
+    if(cut - std::get<0>(e).x() <= support * (1 + 1e-12))
+      continue;
+    const Identified& w = whole[std::get<2>(e)];
+    INFO("point " << std::get<2>(e));
+    REQUIRE(std::get<1>(e) == std::get<1>(w));
+    REQUIRE(std::get<4>(e) == std::get<4>(w));
+    REQUIRE(std::get<3>(e) == std::get<3>(w));
+    ++checked;
+  }
+  return double(checked) / part.size();
+}
+
+std::vector<SC::Point_3> points_of(const rrht_test::Cloud& cloud)
+{
+  std::vector<SC::Point_3> out;
+  for(const auto& s : cloud)
+    out.push_back(s.point);
+  return out;
+}
+
+} // namespace
+
+TEST_CASE("point_id_map: a part of the cloud gives each point whose support it holds the normal of the whole cloud",
+          "[api][point_id_map]")
+{
+  const std::vector<SC::Point_3> cube = points_of(noisy_cube(6000));
+  auto with = [](unsigned int k, const auto& np) {
+    return [=](std::vector<Identified>& cloud) { CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(cloud, k, np); };
+  };
+  const auto np = identified_maps.random_seed(9);
+  CHECK(check_part_against_whole(cube, 0.2, with(50, np)) > 0.6);
+  CHECK(check_part_against_whole(cube, 0.2, with(50, np.sampling(Sampling::CUBES).number_of_planes(200))) > 0.6);
+  CHECK(check_part_against_whole(cube, 0.2, with(50, np.sampling(Sampling::UNIF).number_of_planes(200))) > 0.6);
+  CHECK(check_part_against_whole(cube, 0.2, with(50, np.adaptive(true))) > 0.6);
+  CHECK(check_part_against_whole(cube, 0.2, with(0, np.neighbor_radius(0.25))) > 0.6);
+  CHECK(check_part_against_whole(cube, 0.2, with(30, np.neighbor_radius(0.25))) > 0.6);
+  CHECK(check_part_against_whole(cube, 0.2, with(50, np.refit(true))) > 0.5);
+
+  // A regular grid, where many neighbors are at the same distance, the k-th
+  // too: the ids settle the ties, not the tree.
+  std::vector<SC::Point_3> grid;
+  for(int i = 0; i < 60; ++i)
+    for(int j = 0; j < 60; ++j)
+      grid.emplace_back(0.1 * i, 0.1 * j, (i > 30) ? 0.05 * (i - 30) : 0.);
+  CHECK(check_part_against_whole(grid, 2.0, with(24, np)) > 0.6);
+  CHECK(check_part_against_whole(grid, 2.0, with(24, np.refit(true))) > 0.5);
+  CHECK(check_part_against_whole(grid, 2.0, with(0, np.neighbor_radius(0.25))) > 0.6);
+}
+
+TEST_CASE("point_id_map: by default the id is the position; support_radius_map is the neighborhood's radius",
+          "[api][point_id_map]")
+{
+  const std::vector<SC::Point_3> points = points_of(noisy_cube(3000));
+  std::vector<Identified> with_ids = identified(points), without = identified(points);
+  CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(with_ids, 40, identified_maps);
+  CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(
+    without, 40, params::point_map(CGAL::Nth_of_tuple_property_map<0, Identified>())
+                   .normal_map(CGAL::Nth_of_tuple_property_map<1, Identified>()));
+  for(std::size_t i = 0; i < points.size(); ++i)
+    REQUIRE(std::get<1>(with_ids[i]) == std::get<1>(without[i]));
+
+  // Other ids, other random streams.
+  std::vector<Identified> shifted = identified(points);
+  for(Identified& e : shifted)
+    std::get<2>(e) += 1000000;
+  CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(shifted, 40, identified_maps);
+  std::size_t same = 0;
+  for(std::size_t i = 0; i < points.size(); ++i)
+    same += std::get<1>(shifted[i]) == std::get<1>(with_ids[i]);
+  CHECK(same < points.size() / 10);
+
+  // Without refit, the support is the distance to the 40th nearest
+  // neighbor; with it, at least that, and at most three times as large on
+  // this even sampling.
+  std::vector<Identified> refitted = identified(points);
+  CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(refitted, 40, identified_maps.refit(true));
+  for(std::size_t i = 0; i < points.size(); i += 97)
+  {
+    std::vector<double> distances;
+    for(const SC::Point_3& p : points)
+      distances.push_back(std::sqrt(CGAL::squared_distance(p, points[i])));
+    std::nth_element(distances.begin(), distances.begin() + 40, distances.end());
+    CHECK(std::get<3>(with_ids[i]) == Approx(distances[40]).epsilon(1e-12));
+    CHECK(std::get<3>(refitted[i]) >= std::get<3>(with_ids[i]));
+    CHECK(std::get<3>(refitted[i]) < 3 * std::get<3>(with_ids[i]));
+  }
+
+  // A cloud of at most k points is every point's neighborhood: an infinite
+  // support.
+  std::vector<Identified> few = identified(std::vector<SC::Point_3>(points.begin(), points.begin() + 30));
+  CGAL::rrht_estimate_normals<CGAL::Sequential_tag>(few, 40, identified_maps);
+  for(const Identified& e : few)
+    CHECK(std::isinf(std::get<3>(e)));
+
+  // A point with a non-finite coordinate has support 0.
+  std::vector<SC::Point_3> with_nan = points;
+  with_nan[7] = SC::Point_3(std::numeric_limits<double>::quiet_NaN(), 0, 0);
+  std::vector<Identified> nan_cloud = identified(with_nan);
+  CGAL::rrht_estimate_normals<CGAL::Sequential_tag>(nan_cloud, 40, identified_maps);
+  CHECK(std::get<3>(nan_cloud[7]) == 0.);
+  CHECK(std::get<1>(nan_cloud[7]) == CGAL::NULL_VECTOR);
+}
+
+namespace {
+
+// The points at x >= `cut` are only neighbors.
+struct Beyond_cut
+{
+  typedef Identified key_type;
+  typedef bool value_type;
+  typedef bool reference;
+  typedef boost::readable_property_map_tag category;
+  double cut;
+  friend bool get(const Beyond_cut& map, const Identified& e) { return std::get<0>(e).x() >= map.cut; }
+};
+
+} // namespace
+
+TEST_CASE("neighbor_only_map: those points get nothing written, the others their normals", "[api][point_id_map]")
+{
+  std::vector<SC::Point_3> points = points_of(noisy_cube(4000));
+  points[11] = SC::Point_3(0.5, std::numeric_limits<double>::infinity(), 0); // only a neighbor, not finite
+  for(bool refit : { false, true })
+  {
+    std::vector<Identified> all = identified(points), some = identified(points);
+    CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(all, 40, identified_maps.refit(refit));
+    CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(
+      some, 40, identified_maps.refit(refit).neighbor_only_map(Beyond_cut{ 0.2 }));
+    std::size_t only = 0;
+    for(std::size_t i = 0; i < points.size(); ++i)
+    {
+      INFO("point " << i << (refit ? ", refit" : ""));
+      if(points[i].x() >= 0.2)
+      {
+        ++only;
+        REQUIRE(std::get<1>(some[i]) == CGAL::NULL_VECTOR); // as given
+        REQUIRE(std::get<3>(some[i]) == -1.);
+        REQUIRE(std::get<4>(some[i]) == -1.);
+      }
+      else
+      {
+        REQUIRE(std::get<1>(some[i]) == std::get<1>(all[i]));
+        REQUIRE(std::get<3>(some[i]) == std::get<3>(all[i]));
+        REQUIRE(std::get<4>(some[i]) == std::get<4>(all[i]));
+      }
+    }
+    CHECK(only > points.size() / 4);
+  }
 }

@@ -161,7 +161,7 @@ double worst_angle_of_estimate_normal(const Edge_neighborhood& n, const Eigen::V
   {
     Settings settings = default_settings(layout, unsigned(n.points.size() - 1), std::uint64_t(seed));
     settings.sampling = sampling;
-    const Eigen::Vector3d normal = estimate_normal(position, 0, search, settings, scratch).normal;
+    const Eigen::Vector3d normal = estimate_normal(position, search, settings, scratch).normal;
     worst = (std::max)(worst, angle(normal, expected));
   }
   return worst;

@@ -24,6 +24,7 @@
 #include <CGAL/RRHT/internal/estimate_normal.h>
 #include <CGAL/RRHT/internal/for_each_block.h>
 #include <CGAL/RRHT/internal/refit_normal.h>
+#include <CGAL/RRHT/internal/support_radius.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Named_function_parameters.h>
@@ -37,6 +38,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <iterator>
 #include <limits>
@@ -75,7 +77,10 @@ namespace CGAL {
 
    The result depends only on the input, the parameters and `random_seed`:
    it is the same, bit for bit, with `Sequential_tag` and `Parallel_tag` and
-   any number of threads.
+   any number of threads. With `point_id_map`, it is also the same on any part
+   of the cloud: a point whose support (see `support_radius_map`) lies in the
+   part gets the same normal, bit for bit, as with the whole cloud, which is how
+   a cloud too large for memory is processed tile by tile.
 
    \tparam ConcurrencyTag enables sequential versus parallel algorithm. Possible values are `Sequential_tag`,
                           `Parallel_tag`, and `Parallel_if_available_tag`.
@@ -134,7 +139,7 @@ namespace CGAL {
        \cgalParamDescription{the seed of the random draws}
        \cgalParamType{unsigned int}
        \cgalParamDefault{`0`}
-       \cgalParamExtra{Each point draws from its own random stream, derived from the seed and its position in `points`.}
+       \cgalParamExtra{Each point draws from its own random stream, derived from the seed and its id (see `point_id_map`).}
      \cgalParamNEnd
 
      \cgalParamNBegin{geom_traits}
@@ -258,6 +263,48 @@ namespace CGAL {
                        (figures in the user manual). The confidence written is still that of the RRHT normal. The
                        result stays the same for any number of threads.}
      \cgalParamNEnd
+
+     \cgalParamNBegin{point_id_map}
+       \cgalParamDescription{a property map associating a stable id to each point of `points` (beyond the paper)}
+       \cgalParamType{a model of `ReadablePropertyMap` whose key type is the value type
+                      of the iterator of `PointRange` and whose value type is convertible to `std::uint64_t`}
+       \cgalParamDefault{the position of the point in `points`}
+       \cgalParamExtra{The id keys the point's random stream, and orders the neighbors at the same distance from a
+                       point (a neighborhood lists its points nearest first). With ids that do not depend on the
+                       range, such as the positions of the points in the whole cloud, a part of the cloud gives each
+                       point whose support (see `support_radius_map`) it holds the same normal, bit for bit, as the
+                       whole cloud does. The ids should be distinct: points with the same id draw the same random
+                       numbers, and two of them at the same distance from a point are ordered as they come.}
+     \cgalParamNEnd
+
+     \cgalParamNBegin{support_radius_map}
+       \cgalParamDescription{a property map receiving, for each point, the radius of its support: the ball centered on
+                             the point that holds every point its normal depends on (beyond the paper)}
+       \cgalParamType{a model of `WritablePropertyMap` whose key type is the value type
+                      of the iterator of `PointRange` and whose value type is `double`}
+       \cgalParamDefault{unused}
+       \cgalParamExtra{It is the radius of the point's neighborhood (the distance to its `k`-th nearest neighbor, or
+                       `neighbor_radius`); with `refit`, whose second pass reads the noise estimated around each
+                       neighbor, the largest distance to a neighbor plus the radius of that neighbor's neighborhood.
+                       0 for a point with a non-finite coordinate; infinite where the neighborhood is all of a cloud
+                       of fewer points than it asks for (at most `k`). A part of the cloud that holds every point of the
+                       whole cloud within this radius of a point (the sphere included) gives that point the same
+                       normal, bit for bit, as the whole cloud, with the same `point_id_map`. Computed in double
+                       precision: allow a margin of a few units in the last place when comparing it to a distance.}
+     \cgalParamNEnd
+
+     \cgalParamNBegin{neighbor_only_map}
+       \cgalParamDescription{a property map telling which points are only neighbors of the others: they get no normal
+                             (beyond the paper)}
+       \cgalParamType{a model of `ReadablePropertyMap` whose key type is the value type
+                      of the iterator of `PointRange` and whose value type is `bool`}
+       \cgalParamDefault{no point is only a neighbor}
+       \cgalParamExtra{Nothing is written for the points where it is `true` (normal, confidence, support), and their
+                       estimation is saved (with `refit`, only their second pass: the first gives the noise around
+                       them that their neighbors' refit reads). The other points get the normals they would get
+                       with all estimated. For the halo of a tile, which its points need as neighbors (see
+                       `point_id_map`).}
+     \cgalParamNEnd
    \cgalNamedParamsEnd
 
    \throws std::invalid_argument if `k` is 0 without a positive `neighbor_radius`, or if a parameter is out
@@ -295,6 +342,9 @@ void rrht_estimate_normals(PointRange& points,
   // Without a confidence_map, the confidences go to a map that drops them.
   const auto confidence_map = choose_parameter(get_parameter(np, rrht_np::confidence_map),
                                                Constant_property_map<Element, double>(0.));
+  // Without a support_radius_map, the radii go to a map that drops them.
+  const auto support_radius_map = choose_parameter(get_parameter(np, rrht_np::support_radius_map),
+                                                   Constant_property_map<Element, double>(0.));
   const std::function<bool(double)> callback =
     choose_parameter(get_parameter(np, internal_np::callback), std::function<bool(double)>());
 
@@ -332,51 +382,88 @@ void rrht_estimate_normals(PointRange& points,
   const bool refit = choose_parameter(get_parameter(np, rrht_np::refit), false);
 
   // The finite points of the cloud in double precision, in one kd-tree along
-  // a Hilbert curve. The others get the null vector.
+  // a Hilbert curve, with their ids if a point_id_map is given. The others
+  // get the null vector.
+  const auto point_id_map = get_parameter(np, rrht_np::point_id_map);
+  constexpr bool with_ids = !std::is_same<typename std::decay<decltype(point_id_map)>::type,
+                                          internal_np::Param_not_found>::value;
+  // The points that are only neighbors, by position in the input.
+  const auto neighbor_only_map = get_parameter(np, rrht_np::neighbor_only_map);
+  constexpr bool with_neighbor_only = !std::is_same<typename std::decay<decltype(neighbor_only_map)>::type,
+                                                    internal_np::Param_not_found>::value;
+  std::vector<bool> neighbor_only;
   RRHT::internal::Elements<typename PointRange::iterator> elements;
   std::vector<RRHT::internal::Neighbor_search::Indexed_point> cloud;
+  std::vector<std::uint64_t> ids;
   std::size_t position = 0;
   for(auto it = points.begin(); it != points.end(); ++it, ++position)
   {
     const auto& p = get(point_map, *it);
     const RRHT::internal::Neighbor_search::Point q(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
     elements.add(it);
+    if constexpr(with_ids)
+      ids.push_back(static_cast<std::uint64_t>(get(point_id_map, *it)));
+    if constexpr(with_neighbor_only)
+      neighbor_only.push_back(static_cast<bool>(get(neighbor_only_map, *it)));
     if(RRHT::internal::has_finite_coordinates(q))
       cloud.emplace_back(q, position);
-    else
+    else if(neighbor_only.empty() || !neighbor_only.back())
     {
       put(normal_map, *it, CGAL::NULL_VECTOR);
       put(confidence_map, *it, 0.);
+      put(support_radius_map, *it, 0.);
     }
   }
   if(cloud.empty())
     return;
-  const RRHT::internal::Neighbor_search search(std::move(cloud), ConcurrencyTag());
+  const RRHT::internal::Neighbor_search search(std::move(cloud), ids, ConcurrencyTag());
+  std::vector<std::uint64_t>().swap(ids);
   const std::size_t size = search.size();
   settings.k = static_cast<unsigned int>((std::min<std::size_t>)(k, size - 1));
+  // A cloud of at most k points is every point's neighborhood: each normal
+  // depends on all of it, and has an infinite support.
+  const bool whole_cloud = settings.k < k;
+  auto support_of = [whole_cloud](const RRHT::internal::Neighborhood& neighborhood) {
+    return whole_cloud || !neighborhood.complete ? std::numeric_limits<double>::infinity() : neighborhood.radius;
+  };
   const RRHT::internal::Adaptive_stages stages(settings);
   const bool cubes = adaptive ? stages.spatial.sampling == RRHT::Sampling::CUBES : settings.sampling == RRHT::Sampling::CUBES;
   const RRHT::internal::Cube_weights cube_weights(cubes ? settings.presampling_factor : 1);
 
   // With `refit`, each RRHT normal is kept, with the noise deviation
-  // estimated around it, for the second pass below.
+  // estimated around it (and the radius of its neighborhood, for the
+  // supports), for the second pass below.
   std::vector<Eigen::Vector3d> rrht_normals(refit ? size : 0);
   std::vector<double> noise(refit ? size : 0);
+  constexpr bool with_supports =
+    !std::is_same<typename std::decay<decltype(get_parameter(np, rrht_np::support_radius_map))>::type,
+                  internal_np::Param_not_found>::value;
+  std::vector<double> radii(refit && with_supports ? size : 0);
 
   // Section 2, point by point: the planes through random triples of its
   // neighbors vote in n_rot randomly rotated accumulators, and the normals
   // of their most voted bins are combined (`internal::estimate_normal()`).
   // Points are processed along the Hilbert curve, each with the random
-  // stream of its position in the input.
+  // stream of its id.
+  auto estimated = [&](std::size_t i) { return neighbor_only.empty() || !neighbor_only[search.input_index(i)]; };
   auto process = [&](std::size_t begin, std::size_t end, RRHT::internal::Scratch& scratch) {
     for(std::size_t i = begin; i < end; ++i)
     {
-      const std::size_t input_index = search.input_index(i);
+      const bool written = estimated(i);
+      if(!written && !refit)
+        continue;
       const RRHT::internal::Estimated_normal e =
-        RRHT::internal::estimate_normal(i, input_index, search, settings, scratch, adaptive ? &stages : nullptr);
-      const auto element = elements.at(points.begin(), input_index);
-      put(normal_map, *element, Vector_3(FT(e.normal.x()), FT(e.normal.y()), FT(e.normal.z())));
-      put(confidence_map, *element, e.confidence);
+        RRHT::internal::estimate_normal(i, search, settings, scratch, adaptive ? &stages : nullptr);
+      const auto element = elements.at(points.begin(), search.input_index(i));
+      if(written)
+      {
+        put(normal_map, *element, Vector_3(FT(e.normal.x()), FT(e.normal.y()), FT(e.normal.z())));
+        put(confidence_map, *element, e.confidence);
+      }
+      if(!refit)
+        put(support_radius_map, *element, support_of(scratch.neighborhood));
+      else if(with_supports)
+        radii[i] = support_of(scratch.neighborhood);
       if(refit)
       {
         rrht_normals[i] = e.normal;
@@ -393,18 +480,26 @@ void rrht_estimate_normals(PointRange& points,
   auto refit_normals = [&](std::size_t begin, std::size_t end, RRHT::internal::Scratch& scratch) {
     for(std::size_t i = begin; i < end; ++i)
     {
-      if(rrht_normals[i] == Eigen::Vector3d::Zero())
+      if(!estimated(i))
         continue;
+      const auto element = elements.at(points.begin(), search.input_index(i));
+      if(rrht_normals[i] == Eigen::Vector3d::Zero())
+      {
+        if(with_supports)
+          put(support_radius_map, *element, radii[i]);
+        continue;
+      }
       RRHT::internal::Neighborhood& neighborhood = scratch.neighborhood;
       search.find(i, settings.k, settings.neighbor_radius, neighborhood, scratch.search);
+      if(with_supports)
+        put(support_radius_map, *element, RRHT::internal::support_radius(neighborhood, radii));
       const double deviation = RRHT::internal::noise_of_neighbors(neighborhood.positions, noise, scratch.refit.work);
       if(!std::isfinite(deviation))
         continue;
       const Eigen::Vector3d refitted = RRHT::internal::refit_normal(neighborhood.points, neighborhood.radius,
                                                                     rrht_normals[i], deviation, scratch.refit);
       if(refitted != Eigen::Vector3d::Zero())
-        put(normal_map, *elements.at(points.begin(), search.input_index(i)),
-            Vector_3(FT(refitted.x()), FT(refitted.y()), FT(refitted.z())));
+        put(normal_map, *element, Vector_3(FT(refitted.x()), FT(refitted.y()), FT(refitted.z())));
     }
   };
 

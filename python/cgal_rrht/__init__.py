@@ -44,9 +44,13 @@ def estimate_normals(
     seed: int = ...,
     adaptive: bool = ...,
     refit: bool = ...,
+    ids: Optional[npt.ArrayLike] = ...,
+    neighbors: Optional[npt.ArrayLike] = ...,
+    neighbor_ids: Optional[npt.ArrayLike] = ...,
     threads: Optional[int] = ...,
     progress: bool = ...,
     return_confidence: Literal[False] = ...,
+    return_support: Literal[False] = ...,
 ) -> npt.NDArray[np.float64]: ...
 
 
@@ -67,10 +71,14 @@ def estimate_normals(
     seed: int = ...,
     adaptive: bool = ...,
     refit: bool = ...,
+    ids: Optional[npt.ArrayLike] = ...,
+    neighbors: Optional[npt.ArrayLike] = ...,
+    neighbor_ids: Optional[npt.ArrayLike] = ...,
     threads: Optional[int] = ...,
     progress: bool = ...,
-    return_confidence: Literal[True],
-) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]: ...
+    return_confidence: bool = ...,
+    return_support: bool = ...,
+) -> Union[npt.NDArray[np.float64], Tuple[npt.NDArray[np.float64], ...]]: ...
 
 
 def estimate_normals(
@@ -89,10 +97,14 @@ def estimate_normals(
     seed: int = 0,
     adaptive: bool = False,
     refit: bool = False,
+    ids: Optional[npt.ArrayLike] = None,
+    neighbors: Optional[npt.ArrayLike] = None,
+    neighbor_ids: Optional[npt.ArrayLike] = None,
     threads: Optional[int] = None,
     progress: bool = False,
     return_confidence: bool = False,
-) -> Union[npt.NDArray[np.float64], Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]]:
+    return_support: bool = False,
+) -> Union[npt.NDArray[np.float64], Tuple[npt.NDArray[np.float64], ...]]:
     """Estimates the normals of a point cloud, keeping sharp features.
 
     For each point, planes through random triples of its neighbors vote in a
@@ -144,9 +156,10 @@ def estimate_normals(
         [a_cluster], 0 to 180.
     seed : int, default 0
         The seed of the random draws, 0 to 2**32 - 1. Each point draws from
-        its own stream, derived from the seed and its row: the same input and
-        seed give the same normals, bit for bit, as ``rrht_normals`` and
-        ``CGAL::rrht_estimate_normals()``, whatever the number of threads.
+        its own stream, derived from the seed and its id (by default its
+        row): the same input and seed give the same normals, bit for bit, as
+        ``rrht_normals`` and ``CGAL::rrht_estimate_normals()``, whatever the
+        number of threads.
     adaptive : bool, default False
         The adaptive setting (beyond the paper): every point is estimated
         with the fast setting (at most 300 planes, 2 rotations), and where
@@ -163,6 +176,23 @@ def estimate_normals(
         two parallel planes where the neighborhood is the two sides of a
         thin part, but not near sharp features. The noise deviation is
         estimated from the point's neighbors. Costs a second pass.
+    ids : array_like of int, shape (N,), optional
+        A stable id for each point, 0 to 2**64 - 1, distinct (the named
+        parameter ``point_id_map`` of the C++ function); default: the row.
+        It keys the point's random stream and orders its neighbors at the
+        same distance. With the rows of a whole cloud as ids, a part of it
+        gives each point whose support (``return_support``) it holds the
+        same normal, bit for bit, as the whole cloud:
+        ``cgal_rrht.tiles`` is built on it.
+    neighbors : array_like, shape (M, 3), optional
+        Points that are only neighbors of ``points`` (the named parameter
+        ``neighbor_only_map`` of the C++ function): they get no normal and
+        cost no estimation (with ``refit``, only its first pass), as the
+        halo of a tile. The arrays returned have a row per point of
+        ``points`` only.
+    neighbor_ids : array_like of int, shape (M,), optional
+        The ids of ``neighbors``, needed with ``ids``; without ``ids``, the
+        rows that follow those of ``points``, N to N + M - 1.
     threads : int, optional
         The number of threads for this call, 1 to 1024; default: all cores.
     progress : bool, default False
@@ -170,6 +200,10 @@ def estimate_normals(
     return_confidence : bool, default False
         Also return the confidence of each normal (beyond the paper; the
         named parameter ``confidence_map`` of the C++ function).
+    return_support : bool, default False
+        Also return the support radius of each normal: the radius of the
+        ball around the point that holds every point its normal depends on
+        (the named parameter ``support_radius_map`` of the C++ function).
 
     Returns
     -------
@@ -186,13 +220,24 @@ def estimate_normals(
         It drops near sharp features and where the normal is wrong, so a low
         value flags a normal to distrust; noise lowers it evenly over a
         cloud, so compare values within a cloud. 0 where the normal is zero.
+    support : numpy.ndarray, shape (N,), float64
+        Only with ``return_support``: the distance to the ``k``-th neighbor
+        (or ``radius``); with ``refit``, the largest distance to a neighbor
+        plus that neighbor's own. 0 for a non-finite point. The arrays come
+        in this order, as those of ``numpy.unique``: normals, then
+        confidence and support if asked for.
 
     Raises
     ------
     TypeError
-        If ``points`` is an array of another dtype than float64 or float32.
+        If ``points`` or ``neighbors`` is an array of another dtype than
+        float64 or float32, or ``ids`` or ``neighbor_ids`` is not an array of
+        integers.
     ValueError
-        If ``points`` is not of shape (N, 3), if a parameter is out of its
+        If ``points`` is not of shape (N, 3) (``neighbors`` (M, 3)), ``ids``
+        not of shape (N,) (``neighbor_ids`` (M,)) or negative, if only one
+        of ``ids`` and ``neighbor_ids`` is given with ``neighbors``, if a
+        parameter is out of its
         range (with the message of ``CGAL::rrht_estimate_normals()``), or if
         ``sampling`` or ``aggregation`` is an unknown name.
     KeyboardInterrupt
@@ -216,16 +261,8 @@ def estimate_normals(
     >>> bool(((confidence > 0) & (confidence <= 1)).all())
     True
     """
-    if isinstance(points, np.ndarray):
-        if points.dtype not in (np.float64, np.float32):
-            raise TypeError(
-                f"points must be float64 or float32, not {points.dtype}: convert them with points.astype(np.float64)"
-            )
-        array = np.ascontiguousarray(points, dtype=np.float64)
-    else:
-        array = np.asarray(points, dtype=np.float64)
-    if array.ndim != 2 or array.shape[1] != 3:
-        raise ValueError(f"points must have the shape (N, 3), not {array.shape}")
+    array = _points(points, "points", "N")
+    extra = None if neighbors is None else _points(neighbors, "neighbors", "M")
     arguments = dict(
         k=_integer(k, "k"),
         radius=None if radius is None else float(radius),
@@ -242,10 +279,17 @@ def estimate_normals(
         refit=bool(refit),
         threads=None if threads is None else _integer(threads, "threads"),
         return_confidence=bool(return_confidence),
+        return_support=bool(return_support),
     )
+    id_array = None if ids is None else _ids(ids, len(array), "ids")
+    if extra is not None and (ids is None) != (neighbor_ids is None):
+        raise ValueError("give both ids and neighbor_ids, or neither")
+    if extra is None and neighbor_ids is not None:
+        raise ValueError("neighbor_ids without neighbors")
+    if extra is not None and id_array is not None:
+        id_array = np.concatenate([id_array, _ids(neighbor_ids, len(extra), "neighbor_ids")])
     if not progress:
-        normals, confidence = _core.estimate_normals(array, progress=None, **arguments)
-        return (normals, confidence) if return_confidence else normals
+        return _results(_core.estimate_normals(array, extra, id_array, progress=None, **arguments))
     try:
         from tqdm.auto import tqdm
     except ImportError as error:
@@ -256,9 +300,42 @@ def estimate_normals(
         def advance(done: float) -> None:
             bar.update(int(done * len(array)) - bar.n)
 
-        normals, confidence = _core.estimate_normals(array, progress=advance, **arguments)
+        results = _core.estimate_normals(array, extra, id_array, progress=advance, **arguments)
         advance(1.0)
-    return (normals, confidence) if return_confidence else normals
+    return _results(results)
+
+
+def _results(results: tuple) -> Union[npt.NDArray[np.float64], Tuple[npt.NDArray[np.float64], ...]]:
+    """The normals alone, or in a tuple with the confidences and supports asked for."""
+    asked = tuple(array for array in results if array is not None)
+    return asked[0] if len(asked) == 1 else asked
+
+
+def _points(points: npt.ArrayLike, name: str, rows: str) -> npt.NDArray[np.float64]:
+    """``points`` as a C-contiguous float64 array (rows, 3), without a copy when it is one."""
+    if isinstance(points, np.ndarray):
+        if points.dtype not in (np.float64, np.float32):
+            raise TypeError(
+                f"{name} must be float64 or float32, not {points.dtype}: convert them with {name}.astype(np.float64)"
+            )
+        array = np.ascontiguousarray(points, dtype=np.float64)
+    else:
+        array = np.asarray(points, dtype=np.float64)
+    if array.ndim != 2 or array.shape[1] != 3:
+        raise ValueError(f"{name} must have the shape ({rows}, 3), not {array.shape}")
+    return array
+
+
+def _ids(ids: npt.ArrayLike, count: int, name: str) -> npt.NDArray[np.uint64]:
+    """``ids`` as a C-contiguous uint64 array of ``count`` ids, or a TypeError or ValueError."""
+    array = np.asarray(ids)
+    if array.dtype.kind not in "ui":
+        raise TypeError(f"{name} must be integers, not {array.dtype}")
+    if array.shape != (count,):
+        raise ValueError(f"{name} must have the shape ({count},), one per point, not {array.shape}")
+    if array.dtype.kind == "i" and count and array.min() < 0:
+        raise ValueError(f"{name} must be non-negative")
+    return np.ascontiguousarray(array, dtype=np.uint64)
 
 
 def _integer(value: object, name: str) -> int:

@@ -6,6 +6,8 @@ import numpy.typing as npt
 
 def estimate_normals(
     points: npt.NDArray[np.float64],
+    neighbors: Optional[npt.NDArray[np.float64]],
+    ids: Optional[npt.NDArray[np.uint64]],
     k: int,
     radius: Optional[float],
     planes: Optional[int],
@@ -21,5 +23,6 @@ def estimate_normals(
     refit: bool,
     threads: Optional[int],
     return_confidence: bool,
+    return_support: bool,
     progress: Optional[Callable[[float], None]],
-) -> Tuple[npt.NDArray[np.float64], Optional[npt.NDArray[np.float64]]]: ...
+) -> Tuple[npt.NDArray[np.float64], Optional[npt.NDArray[np.float64]], Optional[npt.NDArray[np.float64]]]: ...

@@ -42,7 +42,8 @@ typedef CGAL::Simple_cartesian<double> Kernel;
 // The points are the row indices of the array, read and written in place.
 typedef boost::iterator_range<boost::counting_iterator<std::size_t>> Rows;
 
-/// Row i of a C-contiguous (N, 3) array of doubles, as a point.
+/// Row i of a C-contiguous (N, 3) array of doubles, as a point, followed by
+/// the rows of a second such array (the points that are only neighbors).
 struct Row_point_map
 {
   typedef std::size_t key_type;
@@ -50,12 +51,26 @@ struct Row_point_map
   typedef value_type reference;
   typedef boost::readable_property_map_tag category;
   const double* data;
+  std::size_t size;
+  const double* neighbors;
 
   friend value_type get(const Row_point_map& map, std::size_t i)
   {
-    const double* row = map.data + 3 * i;
+    const double* row = i < map.size ? map.data + 3 * i : map.neighbors + 3 * (i - map.size);
     return value_type(row[0], row[1], row[2]);
   }
+};
+
+/// Whether row i is one of the second array of `Row_point_map`.
+struct Row_neighbor_only_map
+{
+  typedef std::size_t key_type;
+  typedef bool value_type;
+  typedef bool reference;
+  typedef boost::readable_property_map_tag category;
+  std::size_t size;
+
+  friend bool get(const Row_neighbor_only_map& map, std::size_t i) { return i >= map.size; }
 };
 
 /// Row i of a C-contiguous (N, 3) array of doubles, written as a normal.
@@ -76,9 +91,9 @@ struct Row_normal_map
   }
 };
 
-/// Element i of a (N,) array of doubles, written as a confidence; nothing
-/// is written when `data` is null (the confidence was not asked for).
-struct Row_confidence_map
+/// Element i of a (N,) array of doubles, written (a confidence, a support
+/// radius); nothing is written when `data` is null (it was not asked for).
+struct Row_value_map
 {
   typedef std::size_t key_type;
   typedef double value_type;
@@ -86,11 +101,25 @@ struct Row_confidence_map
   typedef boost::writable_property_map_tag category;
   double* data;
 
-  friend void put(const Row_confidence_map& map, std::size_t i, double confidence)
+  friend void put(const Row_value_map& map, std::size_t i, double value)
   {
     if(map.data)
-      map.data[i] = confidence;
+      map.data[i] = value;
   }
+};
+
+/// Element i of a (N,) array of 64-bit ids, or i itself when `data` is null
+/// (the library's default ids): one instantiation of the estimation serves
+/// both.
+struct Row_id_map
+{
+  typedef std::size_t key_type;
+  typedef std::uint64_t value_type;
+  typedef std::uint64_t reference;
+  typedef boost::readable_property_map_tag category;
+  const std::uint64_t* data;
+
+  friend std::uint64_t get(const Row_id_map& map, std::size_t i) { return map.data ? map.data[i] : i; }
 };
 
 template <typename Enum>
@@ -192,22 +221,35 @@ void run_interruptibly(const std::function<void(const std::function<bool(double)
     std::rethrow_exception(cpp_error);
 }
 
-/// The normals, and their confidences if `with_confidence` (else None). Every
-/// row is written (a point with no normal gets zeros); on an interruption or
-/// an error nothing is returned.
-py::tuple estimate_normals(const py::array_t<double, py::array::c_style>& points, const Options& options,
-                           bool with_confidence, const std::function<void(double)>& progress)
+/// The normals, their confidences if `with_confidence` (else None) and their
+/// support radii if `with_support` (else None). Every row is written (a point
+/// with no normal gets zeros); on an interruption or an error nothing is
+/// returned.
+py::tuple estimate_normals(const py::array_t<double, py::array::c_style>& points,
+                           const std::optional<py::array_t<double, py::array::c_style>>& neighbors,
+                           const std::optional<py::array_t<std::uint64_t, py::array::c_style>>& ids,
+                           const Options& options, bool with_confidence, bool with_support,
+                           const std::function<void(double)>& progress)
 {
   if(points.ndim() != 2 || points.shape(1) != 3)
     throw py::value_error("points must have the shape (N, 3)");
+  if(neighbors && (neighbors->ndim() != 2 || neighbors->shape(1) != 3))
+    throw py::value_error("neighbors must have the shape (M, 3)");
   const std::size_t size = static_cast<std::size_t>(points.shape(0));
+  const std::size_t extra = neighbors ? static_cast<std::size_t>(neighbors->shape(0)) : 0;
+  if(ids && (ids->ndim() != 1 || static_cast<std::size_t>(ids->shape(0)) != size + extra))
+    throw py::value_error("ids must have the shape (N + M,), one per point and neighbor");
   py::array_t<double> normals({points.shape(0), py::ssize_t(3)});
   py::array_t<double> confidence(with_confidence ? points.shape(0) : 0);
-  Rows rows(boost::counting_iterator<std::size_t>(0), boost::counting_iterator<std::size_t>(size));
+  py::array_t<double> support(with_support ? points.shape(0) : 0);
+  Rows rows(boost::counting_iterator<std::size_t>(0), boost::counting_iterator<std::size_t>(size + extra));
 
-  const auto np = CGAL::RRHT::parameters::point_map(Row_point_map{points.data()})
+  const auto np = CGAL::RRHT::parameters::point_map(Row_point_map{points.data(), size, neighbors ? neighbors->data() : nullptr})
+                    .neighbor_only_map(Row_neighbor_only_map{size})
                     .normal_map(Row_normal_map{normals.mutable_data()})
-                    .confidence_map(Row_confidence_map{with_confidence ? confidence.mutable_data() : nullptr})
+                    .confidence_map(Row_value_map{with_confidence ? confidence.mutable_data() : nullptr})
+                    .point_id_map(Row_id_map{ids ? ids->data() : nullptr})
+                    .support_radius_map(Row_value_map{with_support ? support.mutable_data() : nullptr})
                     .neighbor_radius(options.radius)
                     .number_of_rotations(options.rotations)
                     .accumulator_slices(options.slices)
@@ -231,7 +273,8 @@ py::tuple estimate_normals(const py::array_t<double, py::array::c_style>& points
       });
     },
     progress);
-  return with_confidence ? py::make_tuple(normals, confidence) : py::make_tuple(normals, py::none());
+  return py::make_tuple(normals, with_confidence ? py::object(confidence) : py::none(),
+                        with_support ? py::object(support) : py::none());
 }
 
 } // namespace
@@ -241,11 +284,13 @@ PYBIND11_MODULE(_core, m)
   m.doc() = "CGAL::rrht_estimate_normals() on NumPy arrays; use cgal_rrht.estimate_normals().";
   m.def(
     "estimate_normals",
-    [](const py::array_t<double, py::array::c_style>& points, long long k, std::optional<double> radius,
+    [](const py::array_t<double, py::array::c_style>& points,
+       const std::optional<py::array_t<double, py::array::c_style>>& neighbors,
+       const std::optional<py::array_t<std::uint64_t, py::array::c_style>>& ids, long long k, std::optional<double> radius,
        std::optional<long long> planes, long long rotations, long long slices, bool confidence_interval,
        const std::string& sampling, long long presampling, const std::string& aggregation, double cluster_angle,
        long long seed, bool adaptive, bool refit, std::optional<long long> threads, bool return_confidence,
-       const std::function<void(double)>& progress) {
+       bool return_support, const std::function<void(double)>& progress) {
       Options options;
       options.k = count<unsigned int>(k, "k");
       options.radius = radius.value_or(0.);
@@ -272,14 +317,17 @@ PYBIND11_MODULE(_core, m)
       if(threads && (*threads < 1 || *threads > 1024)) // the bound of rrht_normals --threads
         throw py::value_error("threads must be from 1 to 1024, got " + std::to_string(*threads));
       options.threads = threads ? int(*threads) : 0;
-      return estimate_normals(points, options, return_confidence, progress);
+      return estimate_normals(points, neighbors, ids, options, return_confidence, return_support, progress);
     },
-    py::arg("points").noconvert(), py::arg("k"), py::arg("radius").none(true), py::arg("planes").none(true),
+    py::arg("points").noconvert(), py::arg("neighbors").noconvert().none(true), py::arg("ids").noconvert().none(true),
+    py::arg("k"), py::arg("radius").none(true), py::arg("planes").none(true),
     py::arg("rotations"), py::arg("slices"), py::arg("confidence_interval"), py::arg("sampling"),
     py::arg("presampling"), py::arg("aggregation"), py::arg("cluster_angle"), py::arg("seed"),
-    py::arg("adaptive"), py::arg("refit"), py::arg("threads").none(true), py::arg("return_confidence"), py::arg("progress").none(true),
+    py::arg("adaptive"), py::arg("refit"), py::arg("threads").none(true), py::arg("return_confidence"),
+    py::arg("return_support"), py::arg("progress").none(true),
     "The estimation behind cgal_rrht.estimate_normals(), whose documentation says what each argument is.\n"
-    "`points` is a C-contiguous float64 array (N, 3), read in place; `progress`, if not None, is called\n"
-    "with the advancement (0 to 1). Returns the normals (N, 3) and, if `return_confidence`, their\n"
-    "confidences (N,), else None.");
+    "`points` is a C-contiguous float64 array (N, 3), read in place, `neighbors` None or another (M, 3),\n"
+    "`ids` None or a C-contiguous uint64 array (N + M,); `progress`, if not None, is called with the advancement (0 to 1). Returns the normals\n"
+    "(N, 3), their confidences (N,) if `return_confidence` (else None) and their support radii (N,) if\n"
+    "`return_support` (else None).");
 }

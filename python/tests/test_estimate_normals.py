@@ -250,3 +250,76 @@ def test_documentation():
 
 def test_docstring_example():
     assert doctest.testmod(cgal_rrht, raise_on_error=True).attempted > 0
+
+
+def test_ids_make_a_part_of_the_cloud_give_the_normals_of_the_whole(fandisk):
+    points = fandisk[0]
+    whole, confidence, support = cgal_rrht.estimate_normals(points, k=30, return_confidence=True, return_support=True)
+    assert np.array_equal(whole, cgal_rrht.estimate_normals(points, k=30, ids=np.arange(len(points))))
+    cut = np.median(points[:, 0])
+    part = np.flatnonzero(points[:, 0] < cut)[::-1]  # in another order
+    normals, part_confidence, part_support = cgal_rrht.estimate_normals(
+        points[part], k=30, ids=part, return_confidence=True, return_support=True)
+    inside = cut - points[part, 0] > part_support * (1 + 1e-9)
+    assert inside.mean() > 0.8
+    assert np.array_equal(normals[inside], whole[part[inside]])
+    assert np.array_equal(part_confidence[inside], confidence[part[inside]])
+    assert np.array_equal(part_support[inside], support[part[inside]])
+    # Without the ids, the rows of the part key other random streams.
+    assert (cgal_rrht.estimate_normals(points[part], k=30)[inside] != whole[part[inside]]).any(axis=1).mean() > 0.5
+
+
+def test_support_is_the_distance_to_the_kth_neighbor(fandisk):
+    points = fandisk[0][:3000]
+    normals, support = cgal_rrht.estimate_normals(points, k=20, return_support=True)
+    assert normals.shape == (3000, 3) and support.shape == (3000,)
+    distances = np.sort(np.linalg.norm(points[:50, None, :] - points[None, :, :], axis=2), axis=1)
+    assert np.allclose(support[:50], distances[:, 20], rtol=1e-12)
+    _, refit_support = cgal_rrht.estimate_normals(points, k=20, refit=True, return_support=True)
+    assert (refit_support >= support).all() and (refit_support <= 3 * support).all()
+    assert np.isinf(cgal_rrht.estimate_normals(points[:10], k=20, return_support=True)[1]).all()
+
+
+@pytest.mark.parametrize(
+    "ids, error, message",
+    [
+        (np.arange(5.0), TypeError, "ids must be integers, not float64"),
+        (np.arange(4), ValueError, r"ids must have the shape \(5,\), one per point, not \(4,\)"),
+        (np.arange(10).reshape(5, 2), ValueError, r"ids must have the shape \(5,\)"),
+        (np.array([0, 1, -2, 3, 4]), ValueError, "ids must be non-negative"),
+    ],
+)
+def test_bad_ids(ids, error, message):
+    with pytest.raises(error, match=message):
+        cgal_rrht.estimate_normals(noisy_cube(5)[0], k=3, ids=ids)
+
+
+@pytest.mark.parametrize("refit", [False, True])
+def test_neighbors_are_only_neighbors(fandisk, refit):
+    points = fandisk[0]
+    whole, support = cgal_rrht.estimate_normals(points, k=30, refit=refit, return_support=True)
+    normals, own_support = cgal_rrht.estimate_normals(points[:5000], k=30, refit=refit, neighbors=points[5000:],
+                                                      return_support=True)
+    assert normals.shape == (5000, 3) and own_support.shape == (5000,)
+    assert np.array_equal(normals, whole[:5000]) and np.array_equal(own_support, support[:5000])
+    rows = np.arange(len(points))[::-1]  # the same with ids, the points in another order
+    assert np.array_equal(
+        cgal_rrht.estimate_normals(points[rows][:7000], k=30, refit=refit, ids=rows[:7000],
+                                   neighbors=points[rows][7000:], neighbor_ids=rows[7000:]),
+        whole[rows[:7000]])
+
+
+@pytest.mark.parametrize(
+    "arguments, error, message",
+    [
+        (dict(neighbors=np.zeros((4, 2))), ValueError, r"neighbors must have the shape \(M, 3\), not \(4, 2\)"),
+        (dict(neighbors=np.zeros((4, 3), dtype=int)), TypeError, "neighbors must be float64 or float32, not int64"),
+        (dict(neighbors=np.zeros((4, 3)), ids=np.arange(5)), ValueError, "give both ids and neighbor_ids, or neither"),
+        (dict(neighbor_ids=np.arange(4)), ValueError, "neighbor_ids without neighbors"),
+        (dict(neighbors=np.zeros((4, 3)), ids=np.arange(5), neighbor_ids=np.arange(3)), ValueError,
+         r"neighbor_ids must have the shape \(4,\), one per point, not \(3,\)"),
+    ],
+)
+def test_bad_neighbors(arguments, error, message):
+    with pytest.raises(error, match=message):
+        cgal_rrht.estimate_normals(noisy_cube(5)[0], k=3, **arguments)

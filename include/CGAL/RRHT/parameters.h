@@ -30,7 +30,10 @@ namespace internal_np {
   X(cluster_angle_t, cluster_angle)                            \
   X(confidence_map_t, confidence_map)                          \
   X(adaptive_t, adaptive)                                      \
-  X(refit_t, refit)
+  X(refit_t, refit)                                            \
+  X(point_id_map_t, point_id_map)                              \
+  X(support_radius_map_t, support_radius_map)                  \
+  X(neighbor_only_map_t, neighbor_only_map)
 
 #define CGAL_RRHT_DECLARE_TAG(TAG, NAME) enum TAG { NAME };
 CGAL_RRHT_NAMED_PARAMETERS(CGAL_RRHT_DECLARE_TAG)
@@ -56,7 +59,8 @@ CGAL_RRHT_NAMED_PARAMETERS(CGAL_RRHT_DECLARE_TAG)
 /// - one per named parameter of RRHT: `number_of_planes()`,
 ///   `accumulator_slices()`, `number_of_rotations()`,
 ///   `use_confidence_interval()`, `sampling()`, `presampling_factor()`,
-///   `aggregation()`, `cluster_angle()`, `confidence_map()`, `adaptive()` and `refit()`.
+///   `aggregation()`, `cluster_angle()`, `confidence_map()`, `adaptive()`, `refit()`,
+///   `point_id_map()`, `support_radius_map()` and `neighbor_only_map()`.
 ///
 /// The parameters that `CGAL::rrht_estimate_normals()` reads, their types
 /// and their defaults are listed in its documentation.
@@ -156,7 +160,8 @@ struct Named_function_parameters
 /// `neighbor_radius()`, ...) and one per named parameter of RRHT
 /// (`number_of_planes()`, `accumulator_slices()`, `number_of_rotations()`,
 /// `use_confidence_interval()`, `sampling()`, `presampling_factor()`,
-/// `aggregation()`, `cluster_angle()`, `confidence_map()`, `adaptive()`, `refit()`).
+/// `aggregation()`, `cluster_angle()`, `confidence_map()`, `adaptive()`, `refit()`,
+/// `point_id_map()`, `support_radius_map()`, `neighbor_only_map()`).
 /// \ingroup PkgRRHTRef
 namespace parameters {
 

@@ -21,6 +21,7 @@
 
 #include <boost/iterator/counting_iterator.hpp>
 #include <boost/iterator/function_output_iterator.hpp>
+#include <boost/sort/pdqsort/pdqsort.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -45,6 +46,9 @@ struct Neighborhood
   /// the neighborhood is a set of nearest neighbors. The small cubes and balls
   /// of RRHT_Cubes and RRHT_Unif tile this ball.
   double radius = 0;
+  /// False when a k-neighborhood came out smaller than asked for, the
+  /// cloud holding fewer points: it then depends on all of the cloud.
+  bool complete = true;
 };
 
 /// Whether the three coordinates of `p` are finite.
@@ -65,11 +69,13 @@ bool has_finite_coordinates(const Point& p)
 ///   (as the first points met by the tree traversal would). A ball of fewer
 ///   than 3 points falls back to the k nearest neighbors (3 when k = 0).
 ///
-/// Balls list their points nearest first (ties by position), so a ball
-/// does not depend on how the tree was traversed, and a ball whose cap is
-/// not reached is the same neighborhood as the uncapped ball. A ball whose
-/// cap is reached is the k-neighborhood, listed as it in the order of
-/// CGAL's search queue (deterministic for a given cloud).
+/// Every neighborhood lists its points nearest first, points at the same
+/// distance by increasing id, and a tie at the k-th neighbor is settled by
+/// the ids too. The ids are stable 64-bit numbers given with the points
+/// (their positions in the input by default): a neighborhood does not depend
+/// on the tree or on which other points the cloud holds beyond it, so a part
+/// of a cloud that holds a point's neighborhood gives that point the same
+/// neighborhood, in the same order, as the whole cloud.
 ///
 /// The points, all with finite coordinates, are stored in the order of a Hilbert curve
 /// (`CGAL::hilbert_sort()`), and queries are made by position in that order:
@@ -114,12 +120,27 @@ public:
 
   /// Takes the points of `cloud`, which must have finite coordinates (the
   /// cloud is emptied), sorts them along a Hilbert curve and builds the tree.
+  /// The id of each point is its position in the input.
   template <typename ConcurrencyTag>
-  Neighbor_search(std::vector<Indexed_point>&& cloud, ConcurrencyTag) : m_points(std::move(cloud))
+  Neighbor_search(std::vector<Indexed_point>&& cloud, ConcurrencyTag tag)
+    : Neighbor_search(std::move(cloud), std::vector<std::uint64_t>(), tag)
+  {}
+
+  /// As above, with the id of each point given by `ids` at its position in
+  /// the input (the second of its pair), unless `ids` is empty.
+  template <typename ConcurrencyTag>
+  Neighbor_search(std::vector<Indexed_point>&& cloud, const std::vector<std::uint64_t>& ids, ConcurrencyTag)
+    : m_points(std::move(cloud))
   {
     typedef CGAL::Spatial_sort_traits_adapter_3<Kernel, CGAL::First_of_pair_property_map<Indexed_point> > Sort_traits;
     CGAL::hilbert_sort<ConcurrencyTag>(m_points.begin(), m_points.end(), Sort_traits(),
                                        CGAL::Hilbert_sort_median_policy());
+    if(!ids.empty())
+    {
+      m_ids.reserve(m_points.size());
+      for(const Indexed_point& p : m_points)
+        m_ids.push_back(ids[p.second]);
+    }
     m_point_map.points = m_points.data();
     m_traits = Traits(m_point_map);
     m_distance = Distance(m_point_map);
@@ -140,96 +161,132 @@ public:
   /// Position in the input of the point at position `i` in the tree's order.
   std::size_t input_index(std::size_t i) const { return m_points[i].second; }
 
+  /// Id of the point at position `i` in the tree's order.
+  std::uint64_t id(std::size_t i) const { return m_ids.empty() ? std::uint64_t(m_points[i].second) : m_ids[i]; }
+
   /// The neighborhood of the point at position `query` (from 0 to `size()`).
   void find(std::size_t query, unsigned int k, double radius, Neighborhood& out, Scratch& scratch) const
   {
+    typedef std::pair<double, std::size_t> Neighbor;
     const Point& q = m_points[query].first;
+    std::vector<Neighbor>& ball = scratch.ball;
     out.points.clear();
     out.positions.clear();
+    out.complete = true;
     if(radius > 0)
     {
+      const double squared_radius = radius * radius;
+      bool capped = false;
       if(k == 0)
       {
-        scratch.ball.clear();
-        m_tree->search(boost::make_function_output_iterator(Collect_with_distance{ &scratch.ball, &m_points, &q }),
-                      Sphere(q, radius, 0., m_traits));
-        if(scratch.ball.size() >= 3)
-        {
-          // Nearest first, like the k-neighborhoods, rather than in the
-          // order of the tree traversal.
-          std::sort(scratch.ball.begin(), scratch.ball.end());
-          for(const auto& neighbor : scratch.ball)
-            add(neighbor.second, q, out);
-          out.radius = radius;
-          return;
-        }
+        ball.clear();
+        m_tree->search(boost::make_function_output_iterator(Collect_with_distance{ &ball, this, &q }),
+                       Sphere(q, radius, 0., m_traits));
+        // The tree reports whole boxes it finds inside the sphere: the exact
+        // test, with the distance of the k-neighbor search.
+        ball.erase(std::remove_if(ball.begin(), ball.end(),
+                                  [&](const Neighbor& n) { return n.first > squared_radius; }),
+                   ball.end());
+        sort_nearest_first(ball);
       }
       else
       {
-        // The k + 1 nearest, cut at the radius: the ball, capped to the k
-        // nearest. When all are in the ball, it is the k-neighborhood (in
-        // the same order) and shrinks to the ball through the k-th
-        // neighbor; else it is the uncapped ball (sorted as it).
-        K_neighbor_search search(*m_tree, q, k + 1, 0, true, m_distance, false);
-        const double squared_radius = radius * radius;
-        scratch.ball.clear();
-        std::size_t nearest = 0;
-        double farthest = 0;
-        for(const auto& neighbor : search)
-        {
-          ++nearest;
-          if(neighbor.second <= squared_radius)
-          {
-            scratch.ball.emplace_back(CGAL::squared_distance(m_points[neighbor.first].first, q), neighbor.first);
-            farthest = (std::max)(farthest, neighbor.second);
-          }
-        }
-        if(scratch.ball.size() >= 3)
-        {
-          const bool capped = (scratch.ball.size() == nearest && nearest == k + 1);
-          if(!capped)
-            std::sort(scratch.ball.begin(), scratch.ball.end());
-          for(const auto& neighbor : scratch.ball)
-            add(neighbor.second, q, out);
-          out.radius = capped ? std::sqrt(farthest) : radius;
-          return;
-        }
+        // The k + 1 nearest, cut at the radius: when all are in the ball, the
+        // ball capped to the k nearest, which shrinks to the ball through the
+        // k-th neighbor; else the whole ball.
+        nearest(q, std::size_t(k) + 1, ball);
+        capped = ball.size() == std::size_t(k) + 1 && ball.back().first <= squared_radius;
+        if(!capped)
+          ball.erase(std::find_if(ball.begin(), ball.end(), [&](const Neighbor& n) { return n.first > squared_radius; }),
+                     ball.end());
+      }
+      if(ball.size() >= 3)
+      {
+        add_all(ball, q, out);
+        out.radius = capped ? std::sqrt(ball.back().first) : radius;
+        return;
       }
       k = (k == 0) ? 3 : k; // fewer than 3 points in the ball: k nearest neighbors
     }
-
-    // Unsorted: the order of the search's queue, deterministic for a given
-    // cloud (sorting would only cost time).
-    K_neighbor_search search(*m_tree, q, k + 1, 0, true, m_distance, false);
-    double farthest = 0;
-    for(const auto& neighbor : search)
-    {
-      add(neighbor.first, q, out);
-      farthest = (std::max)(farthest, neighbor.second);
-    }
-    out.radius = std::sqrt(farthest);
+    nearest(q, std::size_t(k) + 1, ball);
+    add_all(ball, q, out);
+    out.radius = ball.empty() ? 0. : std::sqrt(ball.back().first);
+    out.complete = ball.size() == std::size_t(k) + 1;
   }
 
 private:
+  // Sorts neighbors by squared distance, then by id. Boost's branchless
+  // pdqsort on the distances alone, the ids read only within the rare runs
+  // of equal distances: the sort is the price of neighborhoods that do not
+  // depend on the tree (benchmark/results/tiles/README.md).
+  void sort_nearest_first(std::vector<std::pair<double, std::size_t> >& neighbors) const
+  {
+    typedef std::pair<double, std::size_t> Neighbor;
+    boost::sort::pdqsort_branchless(neighbors.begin(), neighbors.end(),
+                                    [](const Neighbor& a, const Neighbor& b) { return a.first < b.first; });
+    for(auto run = neighbors.begin(); run != neighbors.end();)
+    {
+      auto next = run + 1;
+      while(next != neighbors.end() && next->first == run->first)
+        ++next;
+      if(next - run > 1)
+        std::sort(run, next, [this](const Neighbor& a, const Neighbor& b) { return id(a.second) < id(b.second); });
+      run = next;
+    }
+  }
+
+  // The `count` nearest points to `q` with their squared distances, nearest
+  // first (`sort_nearest_first()`). CGAL's search breaks ties at the last distance by the
+  // tree's layout: one more point is asked for, and while it is at that same
+  // distance, twice as many, until all the points at that distance are known
+  // and the ids choose among them.
+  void nearest(const Point& q, std::size_t count, std::vector<std::pair<double, std::size_t> >& out) const
+  {
+    for(std::size_t asked = count + 1;; asked *= 2)
+    {
+      out.clear();
+      K_neighbor_search search(*m_tree, q, (unsigned int)((std::min)(asked, size())), 0, true, m_distance, false);
+      for(const auto& neighbor : search)
+        out.emplace_back(neighbor.second, neighbor.first);
+      sort_nearest_first(out);
+      if(out.size() <= count)
+        return;
+      if(out.size() < asked || out.back().first > out[count - 1].first)
+        break;
+    }
+    out.resize(count);
+  }
+
   // Output of the ball search: each index with its squared distance to the
   // query (an assignable functor, as the tree copies output iterators).
   struct Collect_with_distance
   {
     std::vector<std::pair<double, std::size_t> >* ball;
-    const std::vector<Indexed_point>* points;
+    const Neighbor_search* search;
     const Point* query;
-    void operator()(std::size_t i) const { ball->emplace_back(CGAL::squared_distance((*points)[i].first, *query), i); }
+    void operator()(std::size_t i) const { ball->emplace_back(search->squared_distance(i, *query), i); }
   };
 
-  // Adds the point at position `i` to `out`, relative to the query `q`.
-  void add(std::size_t i, const Point& q, Neighborhood& out) const
+  // The squared distance from the point at position `i` to `q`, as the
+  // k-neighbor search computes it, so that both searches agree on ties.
+  double squared_distance(std::size_t i, const Point& q) const
   {
-    const Point& p = m_points[i].first;
-    out.points.emplace_back(p.x() - q.x(), p.y() - q.y(), p.z() - q.z());
-    out.positions.push_back(i);
+    return m_distance.transformed_distance(q, i);
+  }
+
+  // Adds the `neighbors` to `out`, relative to the query `q`.
+  void add_all(const std::vector<std::pair<double, std::size_t> >& neighbors, const Point& q, Neighborhood& out) const
+  {
+    for(const auto& neighbor : neighbors)
+    {
+      const Point& p = m_points[neighbor.second].first;
+      out.points.emplace_back(p.x() - q.x(), p.y() - q.y(), p.z() - q.z());
+      out.positions.push_back(neighbor.second);
+    }
   }
 
   std::vector<Indexed_point> m_points;   // along the Hilbert curve
+  std::vector<std::uint64_t> m_ids;      // in the same order; empty: the input positions
   Point_map m_point_map;
   Traits m_traits;
   std::unique_ptr<Tree> m_tree;           // built once the points are in place

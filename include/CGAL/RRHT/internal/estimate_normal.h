@@ -62,16 +62,15 @@ Estimated_normal rotated_hough_transforms(const Neighborhood& neighborhood, Samp
 }
 
 /// The normal of the neighborhood in `scratch.neighborhood`, of the point
-/// that is the `input_index`-th of the input, with `settings` (Section 2):
-/// draws plane hypotheses with n_rot randomly rotated accumulators and
-/// combines their winners.
-inline Estimated_normal estimate_normal_of_neighborhood(std::size_t input_index, const Settings& settings,
-                                                         Scratch& scratch)
+/// whose id is `id`, with `settings` (Section 2): draws plane hypotheses with
+/// n_rot randomly rotated accumulators and combines their winners.
+inline Estimated_normal estimate_normal_of_neighborhood(std::uint64_t id, const Settings& settings, Scratch& scratch)
 {
   const Neighborhood& neighborhood = scratch.neighborhood;
   const std::vector<Eigen::Vector3d>& points = neighborhood.points;
-  // One random stream per point: the same normals whatever the threads.
-  Random rng(settings.seed, input_index);
+  // One random stream per point, keyed by its id: the same normals whatever
+  // the threads, and whatever part of the cloud holds its neighborhood.
+  Random rng(settings.seed, id);
 
   switch(settings.sampling)
   {
@@ -88,11 +87,10 @@ inline Estimated_normal estimate_normal_of_neighborhood(std::size_t input_index,
   }
 }
 
-/// The normal at the point at `position` in the search's order, the
-/// `input_index`-th of the input: with `settings`, or, if `stages` is not
-/// null, with the adaptive setting (`Adaptive_stages`). Returns the zero
-/// vector when no plane can be formed.
-inline Estimated_normal estimate_normal(std::size_t position, std::size_t input_index, const Neighbor_search& search,
+/// The normal at the point at `position` in the search's order: with
+/// `settings`, or, if `stages` is not null, with the adaptive setting
+/// (`Adaptive_stages`). Returns the zero vector when no plane can be formed.
+inline Estimated_normal estimate_normal(std::size_t position, const Neighbor_search& search,
                                         const Settings& settings, Scratch& scratch,
                                         const Adaptive_stages* stages = nullptr)
 {
@@ -103,14 +101,15 @@ inline Estimated_normal estimate_normal(std::size_t position, std::size_t input_
   // the grids of RRHT_Cubes and RRHT_Unif, without overflow.
   if(neighborhood.points.size() < 3 || !(neighborhood.radius >= 1e-300))
     return Estimated_normal{ Eigen::Vector3d::Zero(), 0. };
+  const std::uint64_t id = search.id(position);
   if(stages == nullptr)
-    return estimate_normal_of_neighborhood(input_index, settings, scratch);
+    return estimate_normal_of_neighborhood(id, settings, scratch);
 
-  const Estimated_normal cheap = estimate_normal_of_neighborhood(input_index, stages->cheap, scratch);
+  const Estimated_normal cheap = estimate_normal_of_neighborhood(id, stages->cheap, scratch);
   if(cheap.confidence >= Adaptive_stages::recheck_below)
     return cheap;
   return estimate_normal_of_neighborhood(
-    input_index, cheap.confidence < Adaptive_stages::spatial_below ? stages->spatial : stages->precise, scratch);
+    id, cheap.confidence < Adaptive_stages::spatial_below ? stages->spatial : stages->precise, scratch);
 }
 
 } // namespace internal

@@ -1,0 +1,225 @@
+# Copyright (c) 2026 The CGAL RRHT authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Point files read by parts and written whole, for ``cgal_rrht.tiles``.
+
+Binary PLY (as ``rrht_normals`` writes it) and ``.npy`` files are memory-mapped,
+so that a task reads the points of a neighboring tile that it needs without
+holding the whole tile (Open3D and NumPy's text readers load whole files).
+Text ``.xyz`` and ``.pwn`` files are read in chunks of rows. Files are written
+through a temporary file renamed at the end, so that a failed write never
+leaves a partial file in place of a good one.
+"""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+from typing import BinaryIO, Iterator, List, Optional, Tuple
+
+import numpy as np
+import numpy.typing as npt
+
+__all__ = ["PointFile", "PointFileError", "write_points", "EXTENSIONS"]
+
+#: The extensions of the files read (any letter case).
+EXTENSIONS = (".ply", ".npy", ".xyz", ".pwn")
+
+_PLY_TYPES = {
+    "char": "i1", "int8": "i1", "uchar": "u1", "uint8": "u1",
+    "short": "i2", "int16": "i2", "ushort": "u2", "uint16": "u2",
+    "int": "i4", "int32": "i4", "uint": "u4", "uint32": "u4",
+    "float": "f4", "float32": "f4", "double": "f8", "float64": "f8",
+}
+
+
+class PointFileError(ValueError):
+    """A point file that cannot be read: missing, malformed or of an unknown format."""
+
+
+class PointFile:
+    """The points of one file, read by row ranges.
+
+    Parameters
+    ----------
+    path : path-like
+        A binary PLY file with a ``vertex`` element of scalar properties
+        ``x``, ``y``, ``z`` (other properties are ignored), a ``.npy`` array
+        of shape (N, 3) or more columns (the first three are the points), or
+        a text ``.xyz`` / ``.pwn`` file (three or more numbers a line).
+
+    Raises
+    ------
+    PointFileError
+        If the file is missing, or not a readable file of these formats; the
+        message names the file.
+    """
+
+    def __init__(self, path: "os.PathLike[str] | str") -> None:
+        self.path = Path(path)
+        suffix = self.path.suffix.lower()
+        if not self.path.is_file():
+            raise PointFileError(f"{self.path}: no such file")
+        self._rows: Optional[np.ndarray] = None
+        try:
+            if suffix == ".ply":
+                self._rows = _map_ply(self.path)
+            elif suffix == ".npy":
+                self._rows = _map_npy(self.path)
+            elif suffix in (".xyz", ".pwn"):
+                self._rows = None
+                self._count: Optional[int] = None  # counted when asked for
+            else:
+                raise PointFileError(f"unknown format: use one of {', '.join(EXTENSIONS)}")
+        except PointFileError as error:
+            raise PointFileError(f"{self.path}: {error}") from None
+        except (OSError, ValueError) as error:
+            raise PointFileError(f"{self.path}: cannot be read: {error}") from None
+        if self._rows is not None:
+            self._count = len(self._rows)
+
+    def __len__(self) -> int:
+        if self._count is None:
+            self._count = sum(len(block) for _, block in _text_chunks(self.path, 1 << 20))
+        return self._count
+
+    def read(self, start: int = 0, stop: Optional[int] = None) -> npt.NDArray[np.float64]:
+        """The points of rows ``start`` to ``stop`` (default: the end), as a float64 array (n, 3)."""
+        stop = len(self) if stop is None else min(stop, len(self))
+        if self._rows is None:
+            return _read_text_rows(self.path, start, stop)
+        rows = self._rows[start:stop]
+        if rows.dtype.names:
+            out = np.empty((len(rows), 3))
+            for column, name in enumerate("xyz"):
+                out[:, column] = rows[name]
+            return out
+        return np.array(rows[:, :3], dtype=np.float64)
+
+    def chunks(self, rows: int = 1 << 20) -> Iterator[Tuple[int, npt.NDArray[np.float64]]]:
+        """The points by chunks of ``rows`` rows, each with the row it starts at."""
+        if self._rows is None:
+            yield from _text_chunks(self.path, rows)
+            return
+        for start in range(0, len(self), rows):
+            yield start, self.read(start, start + rows)
+
+
+def write_points(path: "os.PathLike[str] | str", columns: List[Tuple[str, npt.NDArray]]) -> None:
+    """Writes ``columns`` (name, array (N,) or (N, m) of float64) to ``path``.
+
+    A ``.ply`` file gets one double property per column (the names given, or
+    the name with 0, 1, ... for a multi-column array: pass ``("x", ...)``
+    etc. for the points); a ``.npy`` file one float64 array of all the
+    columns side by side. Written to a temporary file in the same folder,
+    renamed over ``path`` at the end.
+    """
+    path = Path(path)
+    arrays = [np.asarray(array, dtype=np.float64).reshape(len(array), -1) for _, array in columns]
+    table = np.concatenate(arrays, axis=1) if arrays else np.empty((0, 0))
+    temporary = path.with_name(f".{path.name}.partial.{os.getpid()}{path.suffix}")
+    try:
+        with open(temporary, "wb") as stream:
+            if path.suffix.lower() == ".ply":
+                names = []
+                for (name, _), array in zip(columns, arrays):
+                    names += [name] if array.shape[1] == 1 else [f"{name}{i}" for i in range(array.shape[1])]
+                _write_ply_header(stream, len(table), names)
+                stream.write(np.ascontiguousarray(table, dtype="<f8").tobytes())
+            elif path.suffix.lower() == ".npy":
+                np.save(stream, np.ascontiguousarray(table))
+            else:
+                raise PointFileError(f"{path}: cannot write this format: use .ply or .npy")
+        os.replace(temporary, path)
+    finally:
+        if temporary.exists():
+            temporary.unlink()
+
+
+def ply_header(count: int, names: List[str]) -> bytes:
+    """The header of a binary little-endian PLY file of ``count`` vertices with these double properties."""
+    lines = ["ply", "format binary_little_endian 1.0", "comment cgal_rrht", f"element vertex {count}"]
+    lines += [f"property double {name}" for name in names]
+    lines.append("end_header")
+    return ("\n".join(lines) + "\n").encode("ascii")
+
+
+def _write_ply_header(stream: BinaryIO, count: int, names: List[str]) -> None:
+    stream.write(ply_header(count, names))
+
+
+def _map_ply(path: Path) -> np.ndarray:
+    """The vertices of a binary PLY file, memory-mapped as a structured array."""
+    with open(path, "rb") as stream:
+        if stream.readline().strip() != b"ply":
+            raise PointFileError("not a PLY file")
+        encoding, elements = None, []  # [name, count, [(property, dtype)]]
+        while True:
+            line = stream.readline()
+            if not line:
+                raise PointFileError("the PLY header has no end_header")
+            words = line.decode("ascii", "replace").split()
+            if not words or words[0] in ("comment", "obj_info"):
+                continue
+            if words[0] == "end_header":
+                break
+            if words[0] == "format" and len(words) >= 2:
+                encoding = words[1]
+            elif words[0] == "element" and len(words) == 3:
+                elements.append([words[1], int(words[2]), []])
+            elif words[0] == "property" and elements:
+                if words[1] == "list":
+                    elements[-1][2].append((words[-1], None))
+                elif len(words) == 3 and words[1] in _PLY_TYPES:
+                    elements[-1][2].append((words[2], _PLY_TYPES[words[1]]))
+                else:
+                    raise PointFileError(f"unknown PLY property: {line.decode('ascii', 'replace').strip()}")
+            else:
+                raise PointFileError(f"unexpected PLY header line: {line.decode('ascii', 'replace').strip()}")
+        offset = stream.tell()
+    if encoding not in ("binary_little_endian", "binary_big_endian"):
+        raise PointFileError(f"a {encoding} PLY file: only binary PLY files are read (rrht_normals writes them)")
+    order = "<" if encoding == "binary_little_endian" else ">"
+    for name, count, properties in elements:
+        if any(dtype is None for _, dtype in properties):
+            if name == "vertex":
+                raise PointFileError("the vertices have a list property")
+            raise PointFileError(f"the element '{name}' before the vertices has a list property")
+        dtype = np.dtype([(p, order + t) for p, t in properties])
+        if name == "vertex":
+            if not {"x", "y", "z"} <= set(dtype.names or ()):
+                raise PointFileError("the vertices have no x, y and z")
+            if offset + count * dtype.itemsize > path.stat().st_size:
+                raise PointFileError(f"truncated: {count} vertices announced, fewer stored")
+            if count == 0:
+                return np.empty(0, dtype=dtype)
+            return np.memmap(path, dtype=dtype, mode="r", offset=offset, shape=(count,))
+        offset += count * dtype.itemsize
+    raise PointFileError("no vertex element")
+
+
+def _map_npy(path: Path) -> np.ndarray:
+    """The rows of a ``.npy`` array of shape (N, 3 or more), memory-mapped."""
+    array = np.load(path, mmap_mode="r", allow_pickle=False)
+    if array.ndim != 2 or array.shape[1] < 3 or array.dtype.kind not in "fiu":
+        raise PointFileError(f"not an array of points: shape {array.shape}, dtype {array.dtype} (need (N, 3), numbers)")
+    return array
+
+
+def _text_chunks(path: Path, rows: int) -> Iterator[Tuple[int, npt.NDArray[np.float64]]]:
+    start = 0
+    with open(path) as stream:
+        while True:
+            try:
+                block = np.loadtxt(stream, ndmin=2, max_rows=rows, usecols=(0, 1, 2))
+            except ValueError as error:
+                raise PointFileError(f"{path}: malformed, in the {rows} rows from row {start}: {error}") from None
+            if len(block) == 0:
+                return
+            yield start, block
+            start += len(block)
+
+
+def _read_text_rows(path: Path, start: int, stop: int) -> npt.NDArray[np.float64]:
+    parts = [block[max(start - first, 0) : stop - first] for first, block in _text_chunks(path, 1 << 20)
+             if first < stop and first + len(block) > start]
+    return np.concatenate(parts) if parts else np.empty((0, 3))

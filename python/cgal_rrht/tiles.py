@@ -1,0 +1,578 @@
+# Copyright (c) 2026 The CGAL RRHT authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Normals of clouds larger than memory: tiles with halos, on Dask.
+
+The cloud is a set of tiles: the files of a folder (binary PLY or ``.npy``),
+or one large file cut into square tiles of the xy plane (``split()``, or the
+command ``python -m cgal_rrht.tiles split``). One Dask task per tile loads the
+tile and a halo, the points of the other tiles within a margin of its xy
+bounding box (corners included), estimates the normals of them all with the
+points' global ids (``estimate_normals(..., ids=...)``), keeps those of its own
+points and writes them. The halo is checked, not assumed: where a point's
+support (the ball that holds every point its normal depends on) reaches beyond
+the loaded region, the point is estimated again with a halo wide enough. So
+every normal is, bit for bit, the one the whole cloud in memory gives, for any
+tiling and any number of workers.
+
+The global id of a point is its row in the tiles taken in the order of their
+names, unless the tile ``NAME.EXT`` has a file ``NAME.ids.npy`` next to it
+(``split()`` writes them: the rows of the points in the file it cut).
+
+Command line::
+
+    python -m cgal_rrht.tiles INPUT OUTPUT [--scheduler ADDRESS] [--tile-size S] [options]
+    python -m cgal_rrht.tiles split INPUT FOLDER --tile-size S
+
+See ``python -m cgal_rrht.tiles --help``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import logging
+import math
+import os
+import shutil
+import sys
+import tempfile
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, Dict, List, Optional, Sequence, Tuple
+
+import numpy as np
+import numpy.typing as npt
+
+from . import AGGREGATIONS, SAMPLINGS, estimate_normals
+from .point_files import PointFile, PointFileError, ply_header, write_points
+
+__all__ = ["run", "split", "list_tiles", "TileError", "PointFileError", "Tile"]
+
+_IDS_SUFFIX = ".ids.npy"
+_TILE_FORMATS = (".ply", ".npy")
+_CHUNK_ROWS = 1 << 20
+
+
+class TileError(ValueError):
+    """A tile that cannot be used (missing, malformed, empty); the message names it."""
+
+
+@dataclass(frozen=True)
+class Tile:
+    """One tile: its file, its points' ids and the xy bounding box of its finite points."""
+
+    path: str
+    count: int
+    first_id: int  # the id of its first row, when it has no ids file
+    ids_path: Optional[str]
+    lower: Tuple[float, float]  # (inf, inf) when no point is finite
+    upper: Tuple[float, float]
+
+    def ids(self, start: int = 0, stop: Optional[int] = None) -> npt.NDArray[np.uint64]:
+        """The global ids of rows ``start`` to ``stop``."""
+        stop = self.count if stop is None else stop
+        if self.ids_path is None:
+            return np.arange(self.first_id + start, self.first_id + stop, dtype=np.uint64)
+        return np.asarray(np.load(self.ids_path, mmap_mode="r")[start:stop], dtype=np.uint64)
+
+    def meets(self, lower: npt.ArrayLike, upper: npt.ArrayLike) -> bool:
+        """Whether its bounding box meets the xy box [lower, upper]."""
+        return bool(np.all(np.asarray(self.lower) <= upper) and np.all(np.asarray(self.upper) >= lower))
+
+
+# --------------------------------------------------------------------------
+# The tasks (run on the workers).
+
+
+def scan_tile(path: str) -> Tuple[int, Tuple[float, float], Tuple[float, float], Optional[str]]:
+    """Checks a tile and returns its number of points, its xy bounding box and its ids file, or a TileError."""
+    try:
+        points = PointFile(path)
+    except PointFileError as error:
+        raise TileError(f"bad tile {error}") from None
+    if Path(path).suffix.lower() not in _TILE_FORMATS:
+        raise TileError(f"bad tile {path}: tiles are binary PLY or .npy files")
+    if len(points) == 0:
+        raise TileError(f"bad tile {path}: it holds no point")
+    lower, upper = np.full(2, np.inf), np.full(2, -np.inf)
+    for _, chunk in points.chunks(_CHUNK_ROWS):
+        finite = chunk[np.isfinite(chunk).all(axis=1), :2]
+        if len(finite):
+            lower, upper = np.minimum(lower, finite.min(axis=0)), np.maximum(upper, finite.max(axis=0))
+    ids_path = _ids_path(Path(path))
+    if ids_path is not None:
+        try:
+            ids = np.load(ids_path, mmap_mode="r", allow_pickle=False)
+        except (OSError, ValueError) as error:
+            raise TileError(f"bad tile {path}: its ids file {ids_path} cannot be read: {error}") from None
+        if ids.shape != (len(points),) or ids.dtype.kind not in "ui" or (ids.dtype.kind == "i" and ids.min() < 0):
+            raise TileError(f"bad tile {path}: its ids file {ids_path} is not {len(points)} non-negative integers")
+    return len(points), tuple(lower), tuple(upper), None if ids_path is None else str(ids_path)
+
+
+def estimate_tile(index: int, tiles: Sequence[Tile], halo: float, output: str, options: Dict[str, Any]) -> Dict[str, int]:
+    """Estimates the normals of tile ``index`` of ``tiles`` and writes them to ``output``.
+
+    The tile is loaded with the points of the other tiles within ``halo`` of its
+    xy bounding box. Its points whose support reaches beyond that region are
+    estimated again, with the points within a wider margin of them, until
+    every support lies inside what was loaded. Returns counts of points.
+    """
+    tile = tiles[index]
+    own = PointFile(tile.path).read()
+    own_ids = tile.ids()
+    extent = _extent(tiles)
+    confidence = options.get("return_confidence", False)
+
+    lower, upper = np.asarray(tile.lower) - halo, np.asarray(tile.upper) + halo
+    points, ids = _load_box(tiles, lower, upper, skip=index)
+    normals, confidences, support = _estimate(own, own_ids, points, ids, options)
+    halo_points, estimated = len(points), len(own)
+    # The distance from each point to the border of the loaded region, in xy.
+    # Points with a non-finite coordinate depend on nothing.
+    margin = np.minimum(own[:, :2] - lower, upper - own[:, :2]).min(axis=1)
+    done = _inside(support, margin) | ~np.isfinite(own).all(axis=1) | _covers(lower, upper, extent)
+    pending = np.flatnonzero(~done)
+    rounds = 0
+    while len(pending):
+        # Again, with every point within a margin wider than the largest
+        # support left, in xy, of the pending points: the cells of a quarter
+        # of it within 4 cells of theirs. That is enough for a finite
+        # support (the supports found on the part loaded can only shrink to
+        # the true ones); an infinite one (a neighborhood that found too few
+        # points), or a round after the first, doubles the margin.
+        finite = support[pending][np.isfinite(support[pending])]
+        halo = max(1.25 * float(finite.max()) if len(finite) else 2 * halo, 2 * halo if rounds else 0.0)
+        rounds += 1
+        size = halo / 4
+        cells = np.unique(np.floor(own[pending, :2] / size).astype(np.int64), axis=0)
+        near = _dilate(cells, 4)
+        box_lower, box_upper = own[pending, :2].min(axis=0) - halo, own[pending, :2].max(axis=0) + halo
+        points, ids = _load_box(tiles, box_lower, box_upper, keep=lambda xy: _in_cells(xy, size, near),
+                                skip_ids=own_ids[pending])
+        again = _estimate(own[pending], own_ids[pending], points, ids, options)
+        halo_points, estimated = halo_points + len(points), estimated + len(pending)
+        normals[pending], support[pending] = again[0], again[2]
+        if confidence:
+            confidences[pending] = again[1]
+        whole = _covers(box_lower, box_upper, extent)
+        pending = pending[~(_inside(again[2], np.full(len(pending), halo)) | whole)]
+
+    columns = [("x", own[:, 0]), ("y", own[:, 1]), ("z", own[:, 2]),
+               ("nx", normals[:, 0]), ("ny", normals[:, 1]), ("nz", normals[:, 2])]
+    if confidence:
+        columns.append(("confidence", confidences))
+    write_points(output, columns)
+    return {"points": len(own), "halo": halo_points, "estimated": estimated, "rounds": rounds}
+
+
+def _estimate(points: np.ndarray, ids: np.ndarray, neighbors: np.ndarray, neighbor_ids: np.ndarray,
+              options: Dict[str, Any]):
+    """Normals, confidences (or None) and supports of ``points``, with ``neighbors`` as neighbors only."""
+    normals, *rest = estimate_normals(points, ids=ids, neighbors=neighbors, neighbor_ids=neighbor_ids,
+                                      return_support=True, **options)
+    return normals, rest[0] if options.get("return_confidence") else None, rest[-1]
+
+
+def _inside(support: np.ndarray, margin: np.ndarray) -> np.ndarray:
+    # A margin for the rounding of the supports and of the distances.
+    return support * (1 + 1e-9) + 1e-12 * np.abs(margin) < margin
+
+
+def _covers(lower: np.ndarray, upper: np.ndarray, extent: Tuple[np.ndarray, np.ndarray]) -> bool:
+    """Whether the xy box [lower, upper] holds every tile: all the cloud is then loaded."""
+    return bool(np.all(lower <= extent[0]) and np.all(upper >= extent[1]))
+
+
+def _extent(tiles: Sequence[Tile]) -> Tuple[np.ndarray, np.ndarray]:
+    return (np.min([t.lower for t in tiles], axis=0), np.max([t.upper for t in tiles], axis=0))
+
+
+def _dilate(cells: np.ndarray, reach: int) -> np.ndarray:
+    """The cells within ``reach`` cells of ``cells`` in x and y, as sorted unique keys."""
+    steps = range(-reach, reach + 1)
+    offsets = np.array([(dx, dy) for dx in steps for dy in steps])
+    return np.unique(_keys((cells[:, None, :] + offsets[None, :, :]).reshape(-1, 2)))
+
+
+def _keys(cells: np.ndarray) -> np.ndarray:
+    return cells[:, 0] * np.int64(1 << 31) + cells[:, 1]
+
+
+def _in_cells(xy: np.ndarray, size: float, keys: np.ndarray) -> np.ndarray:
+    with np.errstate(invalid="ignore"):
+        cells = np.floor(xy / size)
+    finite = np.isfinite(cells).all(axis=1)
+    out = np.zeros(len(xy), dtype=bool)
+    found = _keys(cells[finite].astype(np.int64))
+    position = np.minimum(np.searchsorted(keys, found), len(keys) - 1)
+    out[finite] = keys[position] == found
+    return out
+
+
+def _load_box(tiles: Sequence[Tile], lower: np.ndarray, upper: np.ndarray, *, skip: Optional[int] = None,
+              keep=None, skip_ids: Optional[np.ndarray] = None) -> Tuple[np.ndarray, np.ndarray]:
+    """The points of the tiles (but tile ``skip``, and but ``skip_ids``) in the xy box, and ``keep``, with their ids."""
+    points, ids = [np.empty((0, 3))], [np.empty(0, dtype=np.uint64)]
+    for t, tile in enumerate(tiles):
+        if t == skip or not tile.meets(lower, upper):
+            continue
+        for start, chunk in PointFile(tile.path).chunks(_CHUNK_ROWS):
+            xy = chunk[:, :2]
+            with np.errstate(invalid="ignore"):
+                inside = np.all((xy >= lower) & (xy <= upper), axis=1)
+            if keep is not None:
+                inside[inside] = keep(xy[inside])
+            rows = np.flatnonzero(inside)
+            if not len(rows):
+                continue
+            chunk_ids = tile.ids(start, start + len(chunk))[rows]
+            if skip_ids is not None:
+                fresh = ~np.isin(chunk_ids, skip_ids)
+                rows, chunk_ids = rows[fresh], chunk_ids[fresh]
+            points.append(chunk[rows])
+            ids.append(chunk_ids)
+    return np.concatenate(points), np.concatenate(ids)
+
+
+# --------------------------------------------------------------------------
+# The driver (run on the client).
+
+
+def list_tiles(folder: "os.PathLike[str] | str") -> List[Path]:
+    """The tile files of a folder (binary PLY and ``.npy``, not the ids files), by name."""
+    folder = Path(folder)
+    if not folder.is_dir():
+        raise TileError(f"{folder}: no such folder")
+    files = sorted(p for p in folder.iterdir()
+                   if p.suffix.lower() in _TILE_FORMATS and not p.name.lower().endswith(_IDS_SUFFIX))
+    if not files:
+        raise TileError(f"{folder}: no tile (.ply or .npy file) in it")
+    return files
+
+
+def run(input: "os.PathLike[str] | str", output: "os.PathLike[str] | str", *, scheduler: Optional[str] = None,
+        workers: Optional[int] = None, threads: int = 1, tile_size: Optional[float] = None,
+        halo: Optional[float] = None, progress: bool = True, return_confidence: bool = False,
+        **estimator: Any) -> Dict[str, int]:
+    """Estimates the normals of a tiled cloud on Dask, tile by tile.
+
+    Parameters
+    ----------
+    input : path-like
+        A folder of tiles (binary PLY or ``.npy`` files), or one point file
+        (binary PLY, ``.npy``, ``.xyz``, ``.pwn``), cut first into tiles of
+        ``tile_size`` in a temporary folder next to ``output``.
+    output : path-like
+        For a folder of tiles, a folder that receives one file per tile, of
+        the same name and format, with the points and their normals (``x y z
+        nx ny nz`` and ``confidence`` if asked for), row by row as in the
+        tile. For one input file, one ``.ply`` or ``.npy`` file of all the
+        points in the order of the input. Each file is written whole or not
+        at all.
+    scheduler : str, optional
+        The address of a Dask scheduler (``tcp://host:8786``), whose workers
+        import ``cgal_rrht`` and see the files at the same paths; default: a
+        ``LocalCluster`` on this machine.
+    workers : int, optional
+        The number of worker processes of the ``LocalCluster``; default: one
+        per core.
+    threads : int, default 1
+        The threads of each task's estimation (with one task per worker
+        thread, as Dask runs them).
+    tile_size : float, optional
+        The side of the square tiles of the xy plane that one input file is
+        cut into; default: about a million points a tile.
+    halo : float, optional
+        The first margin loaded around each tile; default: three times the
+        neighborhood radius that the density of the tiles suggests (five
+        with ``refit``). Too small costs time, never accuracy: the points it
+        fails are estimated again. The halo's points are only neighbors:
+        they cost their reading and their place in the kd-tree.
+    progress : bool, default True
+        Show Dask's progress bar.
+    return_confidence : bool, default False
+        Also write each normal's confidence.
+    **estimator
+        The parameters of ``cgal_rrht.estimate_normals()`` (``k``,
+        ``radius``, ``planes``, ``refit``, ``seed``...).
+
+    Returns
+    -------
+    dict
+        ``tiles``; ``points``; ``halo``, the points loaded as neighbors only
+        (halos and second rounds); ``estimated``, the points estimated
+        (second rounds included); ``rounds``, the second rounds.
+
+    Raises
+    ------
+    TileError
+        Before anything is written, for a missing, malformed or empty tile,
+        naming it.
+    """
+    for name in ("ids", "return_support", "progress"):
+        if name in estimator:
+            raise TypeError(f"run() sets {name} itself")
+    input, output = Path(input), Path(output)
+    if not input.exists():
+        raise TileError(f"{input}: no such file or folder")
+    options = dict(estimator, threads=threads, return_confidence=return_confidence)
+    if input.is_dir():
+        if output.exists() and output.resolve() == input.resolve():
+            raise ValueError(f"{output}: the output folder must not be the folder of the tiles")
+        if tile_size is not None:
+            raise ValueError("tile_size applies to one input file, not to a folder of tiles")
+        return _run_tiles(list_tiles(input), output, scheduler, workers, halo, progress, options)
+    if output.suffix.lower() not in _TILE_FORMATS:
+        raise ValueError(f"{output}: the output of one input file is a .ply or .npy file")
+    PointFile(input)  # a clear error now for a missing or unreadable file
+    work = Path(tempfile.mkdtemp(prefix=f".{output.name}.", dir=output.parent if output.parent.is_dir() else None))
+    try:
+        split(input, work / "tiles", tile_size=tile_size, suffix=output.suffix.lower())
+        summary = _run_tiles(list_tiles(work / "tiles"), work / "normals", scheduler, workers, halo, progress, options)
+        _merge(list_tiles(work / "tiles"), work / "normals", output, return_confidence)
+        return summary
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+
+
+def _run_tiles(paths: List[Path], output: Path, scheduler: Optional[str], workers: Optional[int],
+               halo: Optional[float], progress: bool, options: Dict[str, Any]) -> Dict[str, int]:
+    from distributed import Client, LocalCluster
+    from distributed import progress as progress_bar
+
+    if scheduler is None:
+        cluster = LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1, processes=True,
+                               dashboard_address=None, silence_logs=logging.ERROR)
+        client = Client(cluster)
+    else:
+        cluster, client = None, Client(scheduler)
+    try:
+        names = [str(p) for p in paths]
+        scans = client.gather(client.map(scan_tile, names, pure=False))
+        tiles, first = [], 0
+        for path, (count, lower, upper, ids_path) in zip(names, scans):
+            tiles.append(Tile(path, count, first, ids_path, lower, upper))
+            first += count
+        if halo is None:
+            halo = _first_halo(tiles, options)
+        output.mkdir(parents=True, exist_ok=True)
+        futures = [client.submit(estimate_tile, i, tiles, halo, str(output / Path(t.path).name), options, pure=False)
+                   for i, t in enumerate(tiles)]
+        if progress:
+            progress_bar(futures)
+        try:
+            counts = client.gather(futures)
+        finally:
+            # A task stopped with its worker leaves its temporary file.
+            for tile in tiles:
+                for partial in output.glob(f".{Path(tile.path).name}.partial.*"):
+                    partial.unlink(missing_ok=True)
+        return {"tiles": len(tiles), **{key: sum(c[key] for c in counts) for key in counts[0]}}
+    finally:
+        client.close()
+        if cluster is not None:
+            cluster.close()
+
+
+def _first_halo(tiles: Sequence[Tile], options: Dict[str, Any]) -> float:
+    """Three times the neighborhood radius that the median density of the tiles in xy gives (five with refit)."""
+    if options.get("radius"):
+        reach = float(options["radius"])
+    else:
+        densities = [t.count / max(np.prod(np.subtract(t.upper, t.lower)), 1e-300)
+                     for t in tiles if np.all(np.isfinite(t.lower))]
+        k = options.get("k", 100)
+        reach = math.sqrt((k + 1) / (math.pi * float(np.median(densities)))) if densities else 1.0
+    return (5 if options.get("refit") else 3) * reach
+
+
+# --------------------------------------------------------------------------
+# Cutting one file into tiles, and merging the normals back.
+
+
+def split(input: "os.PathLike[str] | str", folder: "os.PathLike[str] | str", *, tile_size: Optional[float] = None,
+          suffix: str = ".ply") -> List[Path]:
+    """Cuts a point file into square tiles of the xy plane, in one pass over it by chunks.
+
+    Writes to ``folder`` one file per non-empty tile, ``tile_I_J.ply`` (or
+    ``.npy``) holding the points with x in [I s, (I + 1) s) and y in
+    [J s, (J + 1) s), s being ``tile_size``, and ``tile_I_J.ids.npy``, the rows
+    of these points in ``input``: ``run()`` uses them as the points' ids, so
+    that the tiles give the normals of the whole file. Points with a
+    non-finite x or y go to the tile ``tile_nan.EXT``. Default ``tile_size``:
+    about a million points a tile, from the xy bounding box (a pass more).
+    """
+    source, folder = PointFile(input), Path(folder)
+    if tile_size is None:
+        lower, upper, count = np.full(2, np.inf), np.full(2, -np.inf), 0
+        for _, chunk in source.chunks(_CHUNK_ROWS):
+            finite = chunk[np.isfinite(chunk[:, :2]).all(axis=1), :2]
+            count += len(chunk)
+            if len(finite):
+                lower, upper = np.minimum(lower, finite.min(axis=0)), np.maximum(upper, finite.max(axis=0))
+        area = float(np.prod(upper - lower)) if count and np.all(np.isfinite(lower)) else 0.0
+        tile_size = math.sqrt(area * 1e6 / count) if area > 0 else 1.0
+    if not (tile_size > 0 and math.isfinite(tile_size)):
+        raise ValueError(f"tile_size must be positive and finite, not {tile_size}")
+    folder.mkdir(parents=True, exist_ok=True)
+    parts: Dict[str, int] = {}
+    for start, chunk in source.chunks(_CHUNK_ROWS):
+        for name, rows in _by_tile(chunk[:, :2], tile_size):
+            with open(folder / f".{name}.points.part", "ab") as stream:
+                stream.write(np.ascontiguousarray(chunk[rows], dtype="<f8").tobytes())
+            with open(folder / f".{name}.ids.part", "ab") as stream:
+                stream.write((rows + start).astype("<u8").tobytes())
+            parts[name] = parts.get(name, 0) + len(rows)
+    written = []
+    for name, count in sorted(parts.items()):
+        _wrap(folder / f".{name}.points.part", folder / f"{name}{suffix}", count, 3)
+        _wrap(folder / f".{name}.ids.part", folder / f"{name}{_IDS_SUFFIX}", count, 0)
+        written.append(folder / f"{name}{suffix}")
+    return written
+
+
+def _by_tile(xy: np.ndarray, size: float):
+    """The name of each tile that holds points of ``xy``, with their rows, increasing."""
+    with np.errstate(invalid="ignore"):
+        cells = np.floor(xy / size)
+    finite = np.isfinite(cells).all(axis=1)
+    if not finite.all():
+        yield "tile_nan", np.flatnonzero(~finite)
+    rows = np.flatnonzero(finite)
+    cells, inverse = np.unique(cells[finite].astype(np.int64), axis=0, return_inverse=True)
+    order = np.argsort(inverse.ravel(), kind="stable")
+    bounds = np.searchsorted(inverse.ravel()[order], np.arange(len(cells) + 1))
+    for c, (i, j) in enumerate(cells):
+        yield f"tile_{i}_{j}", rows[order[bounds[c] : bounds[c + 1]]]
+
+
+def _wrap(raw: Path, path: Path, count: int, columns: int) -> None:
+    """Puts a header before the raw little-endian rows of ``raw`` (doubles, or uint64 ids if ``columns`` is 0)."""
+    with open(path, "wb") as out, open(raw, "rb") as data:
+        if path.suffix.lower() == ".ply":
+            out.write(ply_header(count, ["x", "y", "z"]))
+        else:
+            shape = (count, columns) if columns else (count,)
+            np.lib.format.write_array_header_1_0(
+                out, {"descr": "<f8" if columns else "<u8", "fortran_order": False, "shape": shape})
+        shutil.copyfileobj(data, out, 1 << 24)
+    raw.unlink()
+
+
+def _merge(tiles: List[Path], normals: Path, output: Path, confidence: bool) -> None:
+    """Writes the normals of the tiles into one file, each point at the row of its id."""
+    names = ["x", "y", "z", "nx", "ny", "nz"] + (["confidence"] if confidence else [])
+    count = sum(len(PointFile(t)) for t in tiles)
+    temporary = output.with_name(f".{output.name}.partial.{os.getpid()}{output.suffix}")
+    try:
+        with open(temporary, "wb") as stream:
+            if output.suffix.lower() == ".ply":
+                stream.write(ply_header(count, names))
+            else:
+                np.lib.format.write_array_header_1_0(
+                    stream, {"descr": "<f8", "fortran_order": False, "shape": (count, len(names))})
+            offset = stream.tell()
+            stream.truncate(offset + 8 * len(names) * count)
+        table = np.memmap(temporary, dtype="<f8", mode="r+", offset=offset, shape=(count, len(names)))
+        for tile in tiles:
+            ids = np.load(_ids_path(tile), mmap_mode="r")
+            for start in range(0, len(ids), _CHUNK_ROWS):
+                rows = _columns(normals / tile.name, start, start + _CHUNK_ROWS, len(names))
+                table[np.asarray(ids[start : start + len(rows)])] = rows
+        table.flush()
+        del table
+        os.replace(temporary, output)
+    finally:
+        if temporary.exists():
+            temporary.unlink()
+
+
+def _columns(path: Path, start: int, stop: int, count: int) -> np.ndarray:
+    """Rows ``start`` to ``stop`` of the first ``count`` columns of a file written by ``write_points()``."""
+    if path.suffix.lower() == ".npy":
+        return np.asarray(np.load(path, mmap_mode="r")[start:stop, :count])
+    rows = PointFile(path)._rows[start:stop]  # structured: the names of write_points()
+    return np.stack([rows[name] for name in rows.dtype.names[:count]], axis=1)
+
+
+def _ids_path(tile: Path) -> Optional[Path]:
+    path = tile.with_name(tile.name[: -len(tile.suffix)] + _IDS_SUFFIX)
+    return path if path.is_file() else None
+
+
+# --------------------------------------------------------------------------
+# Command line.
+
+
+def _parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="python -m cgal_rrht.tiles",
+        description="Normals of a cloud larger than memory, tile by tile with halos, on Dask: the same normals, "
+        "bit for bit, as the whole cloud in memory. INPUT: a folder of tiles (binary PLY or .npy, the ids "
+        "being the rows of the tiles in name order, or NAME.ids.npy), or one point file "
+        "(.ply, .npy, .xyz, .pwn) cut into tiles first. OUTPUT: a folder of tiles with normals, or one .ply or "
+        ".npy file for one input file. 'python -m cgal_rrht.tiles split INPUT FOLDER --tile-size S' only "
+        "cuts a file into tiles.",
+    )
+    parser.add_argument("input", help="a folder of tiles, or one point file")
+    parser.add_argument("output", help="a folder (for a folder of tiles) or a .ply or .npy file")
+    parser.add_argument("--scheduler", metavar="ADDRESS", help="a Dask scheduler (default: a LocalCluster)")
+    parser.add_argument("--workers", type=int, help="worker processes of the LocalCluster (default: one per core)")
+    parser.add_argument("--threads", type=int, default=1, help="threads of each task's estimation (default 1)")
+    parser.add_argument("--tile-size", type=float, help="side of the tiles one input file is cut into "
+                        "(default: about a million points a tile)")
+    parser.add_argument("--halo", type=float, help="first margin loaded around each tile (default: from the density)")
+    parser.add_argument("--confidence", action="store_true", help="also write each normal's confidence")
+    parser.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
+    estimator = parser.add_argument_group("the estimator (as rrht_normals and cgal_rrht.estimate_normals)")
+    estimator.add_argument("-k", "--neighbors", type=int, default=100, help="K, the number of neighbors (default 100)")
+    estimator.add_argument("-r", "--radius", type=float, help="r, the neighborhood ball radius")
+    estimator.add_argument("--planes", type=int, help="T_R, the most planes per accumulator (default: eq. 7)")
+    estimator.add_argument("--rotations", type=int, default=5, help="n_rot (default 5)")
+    estimator.add_argument("--slices", type=int, default=15, help="n_phi (default 15)")
+    estimator.add_argument("--sampling", choices=SAMPLINGS, default="points")
+    estimator.add_argument("--presampling", type=int, default=4, help="c (default 4)")
+    estimator.add_argument("--aggregation", choices=AGGREGATIONS, default="cluster")
+    estimator.add_argument("--cluster-angle", type=float, default=45.0, help="a_cluster in degrees (default 45)")
+    estimator.add_argument("--no-confidence-interval", action="store_true", help="do not stop early (eq. 10)")
+    estimator.add_argument("--adaptive", action="store_true", help="the adaptive setting")
+    estimator.add_argument("--refit", action="store_true", help="refit each normal by least squares")
+    estimator.add_argument("--seed", type=int, default=0, help="random seed (default 0)")
+    return parser
+
+
+def main(argv: Optional[Sequence[str]] = None) -> int:
+    argv = list(sys.argv[1:] if argv is None else argv)
+    try:
+        if argv[:1] == ["split"]:
+            parser = argparse.ArgumentParser(prog="python -m cgal_rrht.tiles split",
+                                             description="Cuts a point file into square tiles of the xy plane, "
+                                             "with the ids files that keep the normals those of the whole file.")
+            parser.add_argument("input")
+            parser.add_argument("folder")
+            parser.add_argument("--tile-size", type=float, help="side of the tiles (default: about 1M points a tile)")
+            parser.add_argument("--format", choices=("ply", "npy"), default="ply")
+            args = parser.parse_args(argv[1:])
+            written = split(args.input, args.folder, tile_size=args.tile_size, suffix="." + args.format)
+            print(f"{len(written)} tiles in {args.folder}")
+            return 0
+        args = _parser().parse_args(argv)
+        summary = run(args.input, args.output, scheduler=args.scheduler, workers=args.workers, threads=args.threads,
+                      tile_size=args.tile_size, halo=args.halo, progress=not args.quiet,
+                      return_confidence=args.confidence, k=args.neighbors, radius=args.radius, planes=args.planes,
+                      rotations=args.rotations, slices=args.slices, sampling=args.sampling,
+                      presampling=args.presampling, aggregation=args.aggregation, cluster_angle=args.cluster_angle,
+                      confidence_interval=not args.no_confidence_interval, adaptive=args.adaptive,
+                      refit=args.refit, seed=args.seed)
+    except (TileError, PointFileError, ValueError, TypeError) as error:
+        print(f"error: {error}", file=sys.stderr)
+        return 2
+    if not args.quiet:
+        print(f"{summary['points']} points in {summary['tiles']} tiles, with {summary['halo']} halo points; "
+              f"{summary['estimated'] - summary['points']} estimated again in {summary['rounds']} second rounds: "
+              f"{args.output}", file=sys.stderr)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

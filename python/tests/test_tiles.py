@@ -1,0 +1,223 @@
+# Copyright (c) 2026 The CGAL RRHT authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""cgal_rrht.tiles: tiles with halos on a Dask LocalCluster give the normals of the
+whole cloud in memory, bit for bit; bad tiles give clear errors and write nothing."""
+
+import os
+import signal
+import subprocess
+import sys
+import threading
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import cgal_rrht
+from cgal_rrht.point_files import PointFile, write_points
+
+distributed = pytest.importorskip("distributed", reason="Dask's distributed scheduler (Debian: python3-distributed)")
+tiles = pytest.importorskip("cgal_rrht.tiles")
+# Dask's event loop on Debian 12's tornado.
+pytestmark = pytest.mark.filterwarnings("ignore:make_current is deprecated:DeprecationWarning")
+
+# The fast setting, so that the 500k points take seconds.
+OPTIONS = dict(k=30, planes=300, rotations=2)
+
+
+def parts_side_by_side(n, seed=3):
+    """`n` noisy points on boxes of several heights side by side on a ground, over [0, 8] x [0, 8]:
+    sharp edges and corners on many tile borders."""
+    rng = np.random.default_rng(seed)
+    points = rng.random((n, 3)) * [8, 8, 0]
+    on_box = rng.random(n) < 0.5
+    cell = np.floor(points[on_box, :2]).astype(int)
+    height = 0.3 + 0.1 * ((cell[:, 0] * 7 + cell[:, 1] * 3) % 5)
+    local = rng.random((on_box.sum(), 3))
+    face = rng.integers(0, 5, on_box.sum())  # 4 sides and the top
+    axis = np.where(face < 4, face // 2, 2)
+    local[np.arange(len(local)), axis] = np.where(face < 4, face % 2, 1.0)
+    points[on_box] = np.column_stack([cell + 0.2 + 0.6 * local[:, :2], local[:, 2] * height])
+    return points + rng.normal(0.0, 0.002, points.shape)
+
+
+@pytest.fixture(scope="module")
+def cluster():
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None,
+                                  silence_logs=50) as local:
+        yield local
+
+
+@pytest.fixture(scope="module")
+def tiled(tmp_path_factory):
+    """500k points cut into 64 tiles of 1 x 1 (binary PLY), and their normals in memory."""
+    folder = tmp_path_factory.mktemp("tiles")
+    points = parts_side_by_side(500_000)
+    np.save(folder / "cloud.npy", points)
+    written = tiles.split(folder / "cloud.npy", folder / "tiles", tile_size=1.0)
+    assert len(written) >= 16
+    return folder, points, cgal_rrht.estimate_normals(points, **OPTIONS)
+
+
+def read_normals(folder, count):
+    """The normals of a folder written by run(), by id (the ids files of split())."""
+    normals = np.full((count, 3), np.nan)
+    for tile in tiles.list_tiles(folder.parent / "tiles"):
+        ids = np.load(tile.with_name(tile.stem + ".ids.npy"))
+        out = PointFile(folder / tile.name)._rows
+        normals[ids] = np.column_stack([out["nx"], out["ny"], out["nz"]])
+    return normals
+
+
+def test_tiles_give_the_normals_of_the_whole_cloud(tiled, cluster):
+    folder, points, expected = tiled
+    summary = tiles.run(folder / "tiles", folder / "normals", scheduler=cluster.scheduler_address,
+                        progress=False, **OPTIONS)
+    assert summary["points"] == len(points) and summary["tiles"] >= 16
+    assert summary["halo"] > 0 and summary["estimated"] >= summary["points"]
+    normals = read_normals(folder / "normals", len(points))
+    assert np.array_equal(normals, expected), f"{(normals != expected).any(axis=1).sum()} normals differ"
+
+
+def test_a_too_small_halo_is_widened_not_trusted(tiled, cluster):
+    folder, points, expected = tiled
+    summary = tiles.run(folder / "tiles", folder / "narrow", scheduler=cluster.scheduler_address, halo=0.01,
+                        progress=False, **OPTIONS)
+    assert summary["rounds"] > 0
+    assert np.array_equal(read_normals(folder / "narrow", len(points)), expected)
+
+
+def test_refit_and_confidence_need_wider_halos_and_get_them(cluster, tmp_path):
+    points = parts_side_by_side(60_000, seed=4)
+    expected, confidence = cgal_rrht.estimate_normals(points, refit=True, return_confidence=True, **OPTIONS)
+    np.save(tmp_path / "cloud.npy", points)
+    tiles.run(tmp_path / "cloud.npy", tmp_path / "out.npy", scheduler=cluster.scheduler_address, tile_size=2.0,
+              progress=False, refit=True, return_confidence=True, **OPTIONS)
+    out = np.load(tmp_path / "out.npy")
+    assert np.array_equal(out[:, :3], points)
+    assert np.array_equal(out[:, 3:6], expected)
+    assert np.array_equal(out[:, 6], confidence)
+
+
+def test_tiles_written_by_rrht_normals(cluster, tmp_path):
+    """The binary PLY of the command-line tool (here the bundled fandisk, x y z nx ny nz in doubles) is a tile."""
+    data = Path(__file__).resolve().parents[2] / "examples" / "data" / "fandisk_20k.ply"
+    (tmp_path / "tiles").mkdir()
+    (tmp_path / "tiles" / "fandisk.ply").write_bytes(data.read_bytes())
+    tiles.run(tmp_path / "tiles", tmp_path / "out", scheduler=cluster.scheduler_address, progress=False, k=30)
+    points = PointFile(tmp_path / "tiles" / "fandisk.ply").read()
+    out = PointFile(tmp_path / "out" / "fandisk.ply")._rows
+    assert np.array_equal(np.column_stack([out["x"], out["y"], out["z"]]), points)
+    assert np.array_equal(np.column_stack([out["nx"], out["ny"], out["nz"]]), cgal_rrht.estimate_normals(points, k=30))
+
+
+def test_a_worker_killed_mid_run_changes_nothing(tiled, cluster):
+    folder, points, expected = tiled
+    output = folder / "killed"
+    client = distributed.Client(cluster)
+    pids = list(client.run(os.getpid).values())
+    failure = []
+
+    def estimate():
+        try:
+            tiles.run(folder / "tiles", output, scheduler=cluster.scheduler_address, progress=False, **OPTIONS)
+        except Exception as error:  # reported below
+            failure.append(error)
+
+    runner = threading.Thread(target=estimate)
+    runner.start()
+    count = len(tiles.list_tiles(folder / "tiles"))
+    while not (output.is_dir() and any(output.glob("*.ply"))) and runner.is_alive():
+        time.sleep(0.01)
+    done = len(list(output.glob("*.ply")))
+    os.kill(pids[0], signal.SIGKILL)
+    runner.join()
+    client.close()
+    assert not failure, failure
+    assert done < count, "the run ended before the worker was killed"
+    assert np.array_equal(read_normals(output, len(points)), expected)
+    assert not list(output.glob(".*partial*"))
+
+
+def test_bad_tiles_are_named_and_nothing_is_written(cluster, tmp_path):
+    good = tmp_path / "good"
+    good.mkdir()
+    points = parts_side_by_side(20_000)
+    write_points(good / "a.ply", [("x", points[:10_000, 0]), ("y", points[:10_000, 1]), ("z", points[:10_000, 2])])
+    np.save(good / "b.npy", points[10_000:])
+    output = tmp_path / "out"
+    tiles.run(good, output, scheduler=cluster.scheduler_address, progress=False, **OPTIONS)
+    before = {p.name: p.read_bytes() for p in output.iterdir()}
+    assert sorted(before) == ["a.ply", "b.npy"]
+
+    def fails(folder, message):
+        with pytest.raises(tiles.TileError, match=message):
+            tiles.run(folder, output, scheduler=cluster.scheduler_address, progress=False, **OPTIONS)
+        assert {p.name: p.read_bytes() for p in output.iterdir()} == before
+
+    for name, make, message in [
+        ("empty", lambda f: np.save(f / "c.npy", np.empty((0, 3))), r"c\.npy: it holds no point"),
+        ("truncated", lambda f: (f / "c.ply").write_bytes((good / "a.ply").read_bytes()[:-100]), r"c\.ply.*truncated"),
+        ("not a ply", lambda f: (f / "c.ply").write_text("hello\n"), r"c\.ply: not a PLY file"),
+        ("ascii ply", lambda f: (f / "c.ply").write_text("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
+                                                          "property float y\nproperty float z\nend_header\n0 0 0\n"),
+         r"c\.ply: a ascii PLY file"),
+        ("missing", lambda f: (f / "c.ply").symlink_to(tmp_path / "nowhere.ply"), r"c\.ply: no such file"),
+        ("wrong shape", lambda f: np.save(f / "c.npy", np.zeros((5, 2))), r"c\.npy: not an array of points"),
+    ]:
+        folder = tmp_path / name
+        folder.mkdir()
+        for tile in good.iterdir():
+            (folder / tile.name).write_bytes(tile.read_bytes())
+        make(folder)
+        fails(folder, message)
+    with pytest.raises(tiles.TileError, match="nowhere: no such file or folder"):
+        tiles.run(tmp_path / "nowhere", output, scheduler=cluster.scheduler_address, progress=False)
+
+    # One input file, malformed past its first chunk: the output file of an
+    # earlier run stays as it was, and no temporary folder is left.
+    single = tmp_path / "single"
+    single.mkdir()
+    np.save(single / "good.npy", points)
+    tiles.run(single / "good.npy", single / "out.npy", scheduler=cluster.scheduler_address, progress=False, **OPTIONS)
+    kept = (single / "out.npy").read_bytes()
+    with open(single / "bad.xyz", "w") as stream:
+        np.savetxt(stream, points)
+        stream.write("1 2 three\n")
+    with pytest.raises(tiles.PointFileError, match=r"bad\.xyz: malformed, in the 1048576 rows from row 0: .* row 20000"):
+        tiles.run(single / "bad.xyz", single / "out.npy", scheduler=cluster.scheduler_address, progress=False,
+                  **OPTIONS)
+    assert (single / "out.npy").read_bytes() == kept
+    assert sorted(p.name for p in single.iterdir()) == ["bad.xyz", "good.npy", "out.npy"]
+
+
+def test_command_line(cli_env, tmp_path):
+    points = parts_side_by_side(30_000)
+    np.save(tmp_path / "cloud.npy", points)
+    command = [sys.executable, "-m", "cgal_rrht.tiles"]
+    done = subprocess.run(command + ["split", str(tmp_path / "cloud.npy"), str(tmp_path / "tiles"), "--tile-size", "2"],
+                          capture_output=True, text=True, env=cli_env)
+    assert done.returncode == 0, done.stderr
+    assert int(done.stdout.split()[0]) >= 16, done.stdout  # 16, and slivers that the noise puts past the borders
+    done = subprocess.run(command + [str(tmp_path / "tiles"), str(tmp_path / "out"), "--workers", "2", "-q",
+                                     "-k", "30", "--planes", "300", "--rotations", "2", "--seed", "4"],
+                          capture_output=True, text=True, env=cli_env)
+    assert done.returncode == 0, done.stderr
+    expected = cgal_rrht.estimate_normals(points, k=30, planes=300, rotations=2, seed=4)
+    assert np.array_equal(read_normals(tmp_path / "out", len(points)), expected)
+    (tmp_path / "tiles" / "tile_0_0.ply").write_text("broken\n")
+    done = subprocess.run(command + [str(tmp_path / "tiles"), str(tmp_path / "out2"), "--workers", "1", "-q"],
+                          capture_output=True, text=True, env=cli_env)
+    assert done.returncode == 2
+    assert "tile_0_0.ply: not a PLY file" in done.stderr
+    assert not (tmp_path / "out2").exists() or not any((tmp_path / "out2").iterdir())
+
+
+@pytest.fixture
+def cli_env():
+    """The environment of a child Python that imports the same cgal_rrht."""
+    env = dict(os.environ)
+    package = os.path.dirname(os.path.dirname(cgal_rrht.__file__))
+    env["PYTHONPATH"] = package + os.pathsep + env.get("PYTHONPATH", "")
+    return env
