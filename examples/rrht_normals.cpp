@@ -11,6 +11,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/rrht_estimate_normals.h>
 #include <CGAL/mst_orient_normals.h>
+#include <CGAL/rrht_orient_normals.h>
 #include <CGAL/IO/read_points.h>
 #include <CGAL/IO/write_points.h>
 #include <CGAL/IO/write_ply_points.h>
@@ -26,12 +27,14 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <iostream>
 #include <memory>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <system_error>
@@ -201,6 +204,46 @@ void check_range(const po::variables_map& options, const char* name, long long l
                     std::to_string(high));
 }
 
+// Three numbers "X,Y,Z", or a usage error about --orient.
+Vector three_numbers(const std::string& text)
+{
+  double x, y, z;
+  char comma1 = 0, comma2 = 0, rest = 0;
+  std::istringstream in(text);
+  if(!(in >> x >> comma1 >> y >> comma2 >> z) || comma1 != ',' || comma2 != ',' || (in >> rest) ||
+     !std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
+    throw po::error("the value of --orient must be consistent, mst, up, X,Y,Z or viewpoint:X,Y,Z, not '" + text + "'");
+  return Vector(x, y, z);
+}
+
+// Checks the value of --orient before anything is read.
+void check_orientation(const std::string& how)
+{
+  if(how == "consistent" || how == "mst" || how == "up")
+    return;
+  const Vector v = three_numbers(how.rfind("viewpoint:", 0) == 0 ? how.substr(10) : how);
+  if(how.rfind("viewpoint:", 0) != 0 && v == CGAL::NULL_VECTOR)
+    throw po::error("the direction of --orient must not be null");
+}
+
+// Orients the normals as --orient says (see its help). The points without
+// normal stay, in their order, after the others.
+void orient(std::vector<Point_with_normal>& points, const std::string& how)
+{
+  const auto maps = CGAL::RRHT::parameters::point_map(Point_map()).normal_map(Normal_map());
+  if(how == "consistent")
+    CGAL::rrht_orient_normals<CGAL::Parallel_if_available_tag>(points, 18, maps);
+  else if(how == "mst")
+    CGAL::mst_orient_normals(points, 18, maps);
+  else if(how == "up")
+    CGAL::rrht_orient_normals<CGAL::Parallel_if_available_tag>(points, 0, maps.direction(Vector(0, 0, 1)));
+  else if(how.rfind("viewpoint:", 0) == 0)
+    CGAL::rrht_orient_normals<CGAL::Parallel_if_available_tag>(
+      points, 0, maps.viewpoint(CGAL::ORIGIN + three_numbers(how.substr(10))));
+  else
+    CGAL::rrht_orient_normals<CGAL::Parallel_if_available_tag>(points, 0, maps.direction(three_numbers(how)));
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -232,7 +275,10 @@ int main(int argc, char** argv)
     ("threads", po::value<long long>()->default_value(0, "all cores"), "number of threads (0 to 1024)")
     ("precision", po::value<long long>()->default_value(9),
      "significant digits written (1 to 17; 17 writes the computed doubles exactly)")
-    ("orient", "orient the normals with CGAL::mst_orient_normals() (18 neighbors)")
+    ("orient", po::value<std::string>()->implicit_value("consistent"),
+     "orient the normals: --orient (consistently, out of closed surfaces, with CGAL::rrht_orient_normals() and "
+     "18 neighbors), --orient=up, --orient=X,Y,Z (towards a direction), --orient=viewpoint:X,Y,Z, or "
+     "--orient=mst (CGAL::mst_orient_normals(), 18 neighbors)")
     ("confidence", "also write each normal's confidence, from 0 to 1: a PLY property 'confidence', or a 7th "
                    "column in .xyz")
     ("quiet,q", "no progress bar");
@@ -269,6 +315,8 @@ int main(int argc, char** argv)
     check_range(options, "seed", 0, 4294967295LL);      // so is the seed
     check_range(options, "threads", 0, 1024);
     check_range(options, "precision", 1, 17);
+    if(options.count("orient"))
+      check_orientation(options["orient"].as<std::string>());
 
     input = options["input"].as<std::string>();
     output = options.count("output") ? options["output"].as<std::string>()
@@ -357,7 +405,7 @@ int main(int argc, char** argv)
   }
   bar.finish();
   if(options.count("orient"))
-    CGAL::mst_orient_normals(points, 18, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()));
+    orient(points, options["orient"].as<std::string>());
   timer.stop();
 
   std::size_t without_normal = 0;

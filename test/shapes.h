@@ -222,6 +222,147 @@ inline Cloud bent_sheet(std::size_t n, double t, unsigned int seed)
   });
 }
 
+/// The box [-1,1]^3 with the closed cubic cavity [-1+w, 1-w]^3 inside (walls
+/// of thickness w, 0 < w < 1; w = 0.01 * 2 * sqrt(3) makes walls 1% of the
+/// diagonal thick), both surfaces uniformly over their total area. The truth
+/// is oriented out of the material: away from the centre on the outer faces,
+/// into the cavity (towards the centre) on the inner ones.
+inline Cloud hollow_box(std::size_t n, double w, unsigned int seed)
+{
+  const double h = (std::max)(0., 1 - w), outer = 24, inner = 24 * h * h; // cavity half-side, areas
+  return generate(n, seed, [=](std::mt19937& rng, std::uniform_real_distribution<double>& u, Sample& s) {
+    const bool cavity = u(rng) * (outer + inner) >= outer;
+    const double r = cavity ? h : 1.;
+    const int face = (std::min)(5, int(6 * u(rng))), axis = face / 2;
+    double c[3] = { r * (2 * u(rng) - 1), r * (2 * u(rng) - 1), r * (2 * u(rng) - 1) }, t[3] = { 0, 0, 0 };
+    c[axis] = (face % 2) ? r : -r;
+    t[axis] = ((face % 2 == 1) != cavity) ? 1. : -1.;
+    s.point = Point(c[0], c[1], c[2]);
+    s.truth = Vector(t[0], t[1], t[2]);
+  });
+}
+
+/// An axis-aligned box [lo[0], hi[0]] x [lo[1], hi[1]] x [lo[2], hi[2]].
+struct Box
+{
+  double lo[3], hi[3];
+};
+
+/// `n` points drawn uniformly over the boundary of the union of the boxes,
+/// with its outward normal as truth. A face of a box is picked with a
+/// probability proportional to its area and a point uniformly on it; the point
+/// is kept only if it is on the boundary of the union, that is if, moved by a
+/// tiny epsilon (1e-9, relative to the coordinate if larger than 1) along the
+/// outward normal of the face, it is out of every box: faces shared with or
+/// covered by another box are rejected, and the density stays uniform. On
+/// degenerate input (no area, or 10^6 draws in a row rejected) it stops and
+/// returns the points it has, possibly fewer than `n`.
+inline Cloud box_union(const std::vector<Box>& boxes, std::size_t n, unsigned int seed)
+{
+  struct Face { std::size_t box; int axis; bool high; };
+  std::vector<Face> faces;
+  std::vector<double> cumulated_area;
+  double total = 0;
+  for(std::size_t b = 0; b < boxes.size(); ++b)
+    for(int axis = 0; axis < 3; ++axis)
+    {
+      const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+      const double area = (boxes[b].hi[i] - boxes[b].lo[i]) * (boxes[b].hi[j] - boxes[b].lo[j]);
+      if(!(area > 0))
+        continue;
+      for(int high = 0; high < 2; ++high)
+      {
+        total += area;
+        faces.push_back(Face{ b, axis, high == 1 });
+        cumulated_area.push_back(total);
+      }
+    }
+  Cloud cloud;
+  if(!(total > 0))
+    return cloud;
+  cloud.reserve(n);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  const std::size_t max_rejections = 1000000;
+  for(std::size_t rejections = 0; cloud.size() < n && rejections < max_rejections;)
+  {
+    // upper_bound never picks a face of zero area.
+    const std::size_t f = std::upper_bound(cumulated_area.begin(), cumulated_area.end(), u(rng) * total) -
+                          cumulated_area.begin();
+    const Face& face = faces[(std::min)(f, faces.size() - 1)];
+    const Box& box = boxes[face.box];
+    double p[3], q[3];
+    for(int d = 0; d < 3; ++d)
+      p[d] = box.lo[d] + u(rng) * (box.hi[d] - box.lo[d]);
+    p[face.axis] = face.high ? box.hi[face.axis] : box.lo[face.axis];
+    const double epsilon = 1e-9 * (std::max)(1., std::abs(p[face.axis]));
+    std::copy(p, p + 3, q);
+    q[face.axis] += face.high ? epsilon : -epsilon;
+    bool covered = false;
+    for(std::size_t b = 0; b < boxes.size() && !covered; ++b)
+      covered = boxes[b].lo[0] <= q[0] && q[0] <= boxes[b].hi[0] && boxes[b].lo[1] <= q[1] &&
+                q[1] <= boxes[b].hi[1] && boxes[b].lo[2] <= q[2] && q[2] <= boxes[b].hi[2];
+    if(covered)
+    {
+      ++rejections;
+      continue;
+    }
+    rejections = 0;
+    double t[3] = { 0, 0, 0 };
+    t[face.axis] = face.high ? 1. : -1.;
+    Sample s;
+    s.point = Point(p[0], p[1], p[2]);
+    s.truth = Vector(t[0], t[1], t[2]);
+    cloud.push_back(s);
+  }
+  return cloud;
+}
+
+/// A finned part, uniformly over its area with the outward normal: the base
+/// block [-1,1] x [-1,1] x [-0.3,0] with 8 fins [x0, x0+0.03] x [-0.8,0.8] x
+/// [0,0.6] on top, 0.03 thick (about 1% of the diagonal) with gaps of 0.03
+/// between them, centred in x.
+inline Cloud finned_part(std::size_t n, unsigned int seed)
+{
+  const int fins = 8;
+  const double thickness = 0.03, gap = 0.03, start = -(fins * thickness + (fins - 1) * gap) / 2;
+  std::vector<Box> boxes(1, Box{ { -1, -1, -0.3 }, { 1, 1, 0 } });
+  for(int i = 0; i < fins; ++i)
+  {
+    const double x0 = start + i * (thickness + gap);
+    boxes.push_back(Box{ { x0, -0.8, 0 }, { x0 + thickness, 0.8, 0.6 } });
+  }
+  return box_union(boxes, n, seed);
+}
+
+/// An open thin blade, like a turbine blade, uniformly over its area: the
+/// ellipse c(u) = (cos u, (t/2) sin u) of the plane xy (chord 2 along x,
+/// thickness t > 0 along y) extruded along z in [-1,1] and twisted about the
+/// z axis by 0.5 z radians, S(u, z) = R(0.5 z) c(u) + z e_z, without caps.
+/// The truth, dS/du x dS/dz normalised, points out of the blade.
+inline Cloud thin_blade(std::size_t n, double t, unsigned int seed)
+{
+  const double b = t / 2, k = 0.5; // semi-axis along y, twist rate
+  // The area element |dS/du x dS/dz| = sqrt(b^2 cos^2 u + sin^2 u + k^2 (1 - b^2)^2 sin^2 u cos^2 u)
+  // does not depend on z, and is at most `bound`.
+  const double bound = std::sqrt((std::max)(1., b * b) + k * k * (1 - b * b) * (1 - b * b) / 4);
+  return generate(n, seed, [=](std::mt19937& rng, std::uniform_real_distribution<double>& u, Sample& s) {
+    double a, area;
+    do
+    {
+      a = 2 * pi * u(rng);
+      const double ca = std::cos(a), sa = std::sin(a);
+      area = std::sqrt(b * b * ca * ca + sa * sa + k * k * (1 - b * b) * (1 - b * b) * sa * sa * ca * ca);
+    } while(u(rng) * bound > area);
+    const double z = 2 * u(rng) - 1, ca = std::cos(a), sa = std::sin(a), cr = std::cos(k * z),
+                 sr = std::sin(k * z);
+    s.point = Point(cr * ca - sr * b * sa, sr * ca + cr * b * sa, z);
+    // dS/du x dS/dz = (R(k z) (b cos u, sin u), k (b^2 - 1) sin u cos u): outward, as at u = 0 it is +x.
+    const Vector normal(cr * b * ca - sr * sa, sr * b * ca + cr * sa, k * (b * b - 1) * sa * ca);
+    s.truth = normal / std::sqrt(normal.squared_length());
+  });
+}
+
 /// `n` points drawn uniformly over the area of a polygon mesh (faces
 /// fan-triangulated); the normal of the triangle a point is on is its truth.
 /// Returns false if the file cannot be read or has no area.

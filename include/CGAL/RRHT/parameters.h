@@ -33,7 +33,10 @@ namespace internal_np {
   X(refit_t, refit)                                            \
   X(point_id_map_t, point_id_map)                              \
   X(support_radius_map_t, support_radius_map)                  \
-  X(neighbor_only_map_t, neighbor_only_map)
+  X(neighbor_only_map_t, neighbor_only_map)                    \
+  X(direction_t, direction)                                    \
+  X(viewpoint_t, viewpoint)                                    \
+  X(viewpoint_map_t, viewpoint_map)
 
 #define CGAL_RRHT_DECLARE_TAG(TAG, NAME) enum TAG { NAME };
 CGAL_RRHT_NAMED_PARAMETERS(CGAL_RRHT_DECLARE_TAG)
@@ -60,7 +63,9 @@ CGAL_RRHT_NAMED_PARAMETERS(CGAL_RRHT_DECLARE_TAG)
 ///   `accumulator_slices()`, `number_of_rotations()`,
 ///   `use_confidence_interval()`, `sampling()`, `presampling_factor()`,
 ///   `aggregation()`, `cluster_angle()`, `confidence_map()`, `adaptive()`, `refit()`,
-///   `point_id_map()`, `support_radius_map()` and `neighbor_only_map()`.
+///   `point_id_map()`, `support_radius_map()` and `neighbor_only_map()`, and
+///   those of `CGAL::rrht_orient_normals()`: `direction()`, `viewpoint()` and
+///   `viewpoint_map()`.
 ///
 /// The parameters that `CGAL::rrht_estimate_normals()` reads, their types
 /// and their defaults are listed in its documentation.
@@ -161,7 +166,8 @@ struct Named_function_parameters
 /// (`number_of_planes()`, `accumulator_slices()`, `number_of_rotations()`,
 /// `use_confidence_interval()`, `sampling()`, `presampling_factor()`,
 /// `aggregation()`, `cluster_angle()`, `confidence_map()`, `adaptive()`, `refit()`,
-/// `point_id_map()`, `support_radius_map()`, `neighbor_only_map()`).
+/// `point_id_map()`, `support_radius_map()`, `neighbor_only_map()`,
+/// `direction()`, `viewpoint()`, `viewpoint_map()`).
 /// \ingroup PkgRRHTRef
 namespace parameters {
 

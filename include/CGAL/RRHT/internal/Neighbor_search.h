@@ -161,6 +161,13 @@ public:
   /// Position in the input of the point at position `i` in the tree's order.
   std::size_t input_index(std::size_t i) const { return m_points[i].second; }
 
+  /// The point at position `i` in the tree's order.
+  Eigen::Vector3d point(std::size_t i) const
+  {
+    const Point& p = m_points[i].first;
+    return Eigen::Vector3d(p.x(), p.y(), p.z());
+  }
+
   /// Id of the point at position `i` in the tree's order.
   std::uint64_t id(std::size_t i) const { return m_ids.empty() ? std::uint64_t(m_points[i].second) : m_ids[i]; }
 

@@ -1,0 +1,139 @@
+// Copyright (c) 2026 The CGAL RRHT authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Consistent signs on a graph whose edges say, with a signed weight, whether
+// their two ends agree: a greedy agglomeration of consistently oriented
+// clusters, after the greedy collapse of Jakob et al. (2019) and the signed
+// union-find of Schertler et al. (2017).
+
+#ifndef CGAL_RRHT_INTERNAL_SIGNED_AGGLOMERATION_H
+#define CGAL_RRHT_INTERNAL_SIGNED_AGGLOMERATION_H
+
+#include <CGAL/RRHT/internal/orientation_edges.h>
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <queue>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace RRHT {
+namespace internal {
+
+/// The clusters of a graph of `size` vertices and the sign of each vertex
+/// in its cluster, from the signed `edges`.
+///
+/// Every vertex starts as a cluster of its own. Two adjacent clusters are
+/// joined, one of them flipped if the sum of the signed weights of the edges
+/// between them is negative, in the order of the largest absolute sum first:
+/// a cluster is joined by all the evidence between it and its neighbors,
+/// not by its single strongest edge as in a spanning tree, so that a few
+/// wrong edges (noise at a sharp edge, an outlier) are outvoted. Clusters
+/// with no evidence between them (no edge, or weights summing to 0) stay
+/// apart. Ties are broken by the vertices' numbers: the result depends only
+/// on the edges and their order.
+class Signed_agglomeration
+{
+public:
+  Signed_agglomeration(std::size_t size, const std::vector<Signed_edge>& edges)
+    : m_parent(size), m_sign(size, 1)
+  {
+    for(std::size_t v = 0; v < size; ++v)
+      m_parent[v] = std::uint32_t(v);
+    std::vector<Adjacency> adjacency(size);
+    for(const Signed_edge& e : edges)
+    {
+      adjacency[e.a][e.b] += e.weight;
+      adjacency[e.b][e.a] += e.weight;
+    }
+    std::priority_queue<Candidate> candidates;
+    for(std::size_t a = 0; a < size; ++a)
+      for(const auto& neighbor : adjacency[a])
+        if(a < neighbor.first && neighbor.second != 0)
+          candidates.push({ std::abs(neighbor.second), std::uint32_t(a), neighbor.first, neighbor.second });
+    while(!candidates.empty())
+    {
+      const Candidate best = candidates.top();
+      candidates.pop();
+      // Skip what a join made stale: a cluster joined to another, or a sum
+      // that has changed since (its new value was pushed then).
+      if(m_parent[best.a] != best.a || m_parent[best.b] != best.b)
+        continue;
+      const auto between = adjacency[best.a].find(best.b);
+      if(between == adjacency[best.a].end() || between->second != best.sum)
+        continue;
+      // The cluster with fewer neighbors joins the other.
+      std::uint32_t kept = best.a, joined = best.b;
+      if(adjacency[joined].size() > adjacency[kept].size())
+        std::swap(kept, joined);
+      const double flip = best.sum < 0 ? -1. : 1.;
+      m_parent[joined] = kept;
+      m_sign[joined] = static_cast<signed char>(flip);
+      adjacency[kept].erase(joined);
+      for(const auto& neighbor : adjacency[joined])
+      {
+        if(neighbor.first == kept)
+          continue;
+        double& sum = adjacency[kept][neighbor.first];
+        sum += flip * neighbor.second;
+        Adjacency& other = adjacency[neighbor.first];
+        other.erase(joined);
+        other[kept] = sum;
+        if(sum != 0)
+          candidates.push({ std::abs(sum), (std::min)(kept, neighbor.first), (std::max)(kept, neighbor.first), sum });
+      }
+      Adjacency().swap(adjacency[joined]);
+    }
+    // Signs relative to the roots, each root the representative of its
+    // cluster.
+    for(std::size_t v = 0; v < size; ++v)
+    {
+      std::uint32_t root = std::uint32_t(v);
+      int sign = 1;
+      while(m_parent[root] != root)
+      {
+        sign *= m_sign[root];
+        root = m_parent[root];
+      }
+      m_root_of.push_back(root);
+      m_sign_in_cluster.push_back(static_cast<signed char>(sign));
+    }
+  }
+
+  /// The representative of the cluster of vertex `v`.
+  std::uint32_t cluster(std::size_t v) const { return m_root_of[v]; }
+
+  /// The sign, +1 or -1, of vertex `v` in its cluster.
+  int sign(std::size_t v) const { return m_sign_in_cluster[v]; }
+
+private:
+  typedef std::unordered_map<std::uint32_t, double> Adjacency; // neighbor cluster: sum of signed weights
+
+  struct Candidate
+  {
+    double strength; // |sum|
+    std::uint32_t a, b;
+    double sum;
+    // The strongest first, then the smallest vertex numbers.
+    bool operator<(const Candidate& other) const
+    {
+      if(strength != other.strength)
+        return strength < other.strength;
+      return a != other.a ? a > other.a : b > other.b;
+    }
+  };
+
+  std::vector<std::uint32_t> m_parent;
+  std::vector<signed char> m_sign; // relative to the parent
+  std::vector<std::uint32_t> m_root_of;
+  std::vector<signed char> m_sign_in_cluster;
+};
+
+} // namespace internal
+} // namespace RRHT
+} // namespace CGAL
+
+#endif // CGAL_RRHT_INTERNAL_SIGNED_AGGLOMERATION_H

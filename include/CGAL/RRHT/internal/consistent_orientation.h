@@ -1,0 +1,59 @@
+// Copyright (c) 2026 The CGAL RRHT authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// A consistent orientation of unoriented normals from the points alone.
+
+#ifndef CGAL_RRHT_INTERNAL_CONSISTENT_ORIENTATION_H
+#define CGAL_RRHT_INTERNAL_CONSISTENT_ORIENTATION_H
+
+#include <CGAL/RRHT/internal/Neighbor_search.h>
+#include <CGAL/RRHT/internal/Signed_agglomeration.h>
+#include <CGAL/RRHT/internal/orientation_edges.h>
+#include <CGAL/RRHT/internal/outward_signs.h>
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace CGAL {
+namespace RRHT {
+namespace internal {
+
+/// The sign, +1 or -1, by which each unit normal of `normals` (in the order
+/// of `search`) is to be multiplied: the signed edges of the graph of the
+/// `k` nearest neighbors (`orientation_edges()`) join the points into
+/// consistently oriented clusters (`Signed_agglomeration`), and each
+/// cluster is turned out of the solid (`outward_signs()`).
+template <typename ConcurrencyTag>
+std::vector<int> consistent_orientation(const Neighbor_search& search, const std::vector<Eigen::Vector3d>& normals,
+                                        unsigned int k)
+{
+  const std::size_t size = search.size();
+  if(size < 2)
+    return std::vector<int>(size, 1);
+  std::vector<double> areas;
+  const Signed_agglomeration clusters(size, orientation_edges<ConcurrencyTag>(search, normals, k, areas));
+  std::vector<std::uint32_t> cluster(size);
+  std::vector<int> signs(size);
+  std::vector<Eigen::Vector3d> points(size);
+  for(std::size_t v = 0; v < size; ++v)
+  {
+    cluster[v] = clusters.cluster(v);
+    signs[v] = clusters.sign(v);
+    points[v] = search.point(v);
+  }
+  const std::vector<std::vector<std::uint32_t> > members = clusters_of(cluster);
+  const std::vector<int> outward = outward_signs(members, points, normals, signs, areas);
+  for(std::size_t c = 0; c < members.size(); ++c)
+    for(std::uint32_t v : members[c])
+      signs[v] *= outward[c];
+  return signs;
+}
+
+} // namespace internal
+} // namespace RRHT
+} // namespace CGAL
+
+#endif // CGAL_RRHT_INTERNAL_CONSISTENT_ORIENTATION_H

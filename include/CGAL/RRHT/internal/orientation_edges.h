@@ -1,0 +1,150 @@
+// Copyright (c) 2026 The CGAL RRHT authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The signed edges of a consistent orientation: the k-nearest-neighbor graph
+// of the points, each edge weighted by how surely its two normals agree in
+// orientation as they are (positive) or after one of them flips (negative).
+
+#ifndef CGAL_RRHT_INTERNAL_ORIENTATION_EDGES_H
+#define CGAL_RRHT_INTERNAL_ORIENTATION_EDGES_H
+
+#include <CGAL/RRHT/internal/Neighbor_search.h>
+#include <CGAL/RRHT/internal/Progress.h>
+#include <CGAL/RRHT/internal/for_each_block.h>
+
+#include <CGAL/number_type_config.h>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace CGAL {
+namespace RRHT {
+namespace internal {
+
+/// An edge between the points at positions `a` < `b` of the search, with its
+/// signed weight (0: no evidence).
+struct Signed_edge
+{
+  std::uint32_t a, b;
+  double weight;
+};
+
+/// The points' offsets from the tangent plane of `normal` at the point:
+/// their first quartile, in absolute value, is the scale of the noise across
+/// the surface that the other side of a thin part does not inflate.
+inline double offset_scale(const Neighborhood& neighborhood, const Eigen::Vector3d& normal, std::vector<double>& work)
+{
+  work.clear();
+  for(std::size_t t = 1; t < neighborhood.points.size(); ++t)
+    work.push_back(std::abs(normal.dot(neighborhood.points[t])));
+  if(work.empty())
+    return 0;
+  const auto quartile = work.begin() + (work.size() - 1) / 4;
+  std::nth_element(work.begin(), quartile, work.end());
+  return *quartile;
+}
+
+/// The signed weight of the edge from a point with unit normal `ni` to a
+/// neighbor at `d` from it with unit normal `nj`, their offset scales `si`
+/// and `sj`.
+///
+/// - Nearly parallel normals (within 30 degrees) are on one smooth sheet when
+///   each point lies within the noise of the other's tangent plane (with
+///   the bend that the angle of the normals implies): their dot product
+///   says whether they agree (Hoppe et al. 1992). Farther apart, they are two
+///   sheets (the sides of a thin part, or of a narrow gap) whose relation the
+///   pair cannot tell: no evidence.
+/// - Across a sharp edge, the dot product is noise (perpendicular normals).
+///   The normal at one end reflected through the plane that bisects the
+///   chord is the normal at the other end of a circular arc between them:
+///   its dot product with the other normal says whether they agree (the
+///   reflection criterion of Xie et al. 2003, after König and Gumhold 2009),
+///   and it is confident across a 90 degree edge.
+inline double signed_weight(const Eigen::Vector3d& d, const Eigen::Vector3d& ni, const Eigen::Vector3d& nj, double si,
+                            double sj)
+{
+  const double cos_parallel = 0.8660254037844386; // cos 30 degrees
+  const double noise_factor = 7, normal_tolerance = 0.03;
+  const double length = d.norm(), c = ni.dot(nj);
+  if(!(length > 0))
+    return c;
+  if(std::abs(c) > cos_parallel)
+  {
+    const double half_angle_sine = std::sqrt((std::max)(0., (1 - std::abs(c)) / 2));
+    const double band = noise_factor * (std::min)(si, sj) + length * (half_angle_sine + normal_tolerance);
+    return std::abs(ni.dot(d)) <= band && std::abs(nj.dot(d)) <= band ? c : 0.;
+  }
+  const Eigen::Vector3d u = d / length;
+  return c - 2 * ni.dot(u) * nj.dot(u);
+}
+
+/// The edges of the graph whose vertices are the points of `search` and
+/// whose edges join each point to its `k` nearest neighbors (once per
+/// pair), with their signed weights, in a fixed order whatever the number of
+/// threads. `normals` are unit vectors in the order of the search. Also
+/// gives each point's share of the surface's area, the area of the disk of
+/// its neighborhood shared among its points, in `areas`.
+template <typename ConcurrencyTag>
+std::vector<Signed_edge> orientation_edges(const Neighbor_search& search, const std::vector<Eigen::Vector3d>& normals,
+                                           unsigned int k, std::vector<double>& areas)
+{
+  const std::size_t size = search.size();
+  k = static_cast<unsigned int>((std::min<std::size_t>)(k, size - 1));
+  // The neighbors of every point, k per point, and their offset scales.
+  std::vector<std::uint32_t> neighbors(size * k);
+  std::vector<double> scales(size);
+  areas.assign(size, 0.);
+  struct Scratch
+  {
+    Neighborhood neighborhood;
+    Neighbor_search::Scratch search;
+    std::vector<double> work;
+  };
+  const std::function<bool(double)> no_callback;
+  Progress no_progress(no_callback, size);
+  for_each_block<ConcurrencyTag>(size, no_progress, [] { return Scratch(); },
+                                 [&](std::size_t begin, std::size_t end, Scratch& scratch) {
+    for(std::size_t i = begin; i < end; ++i)
+    {
+      search.find(i, k, 0., scratch.neighborhood, scratch.search);
+      const std::vector<std::size_t>& positions = scratch.neighborhood.positions;
+      for(std::size_t t = 0; t < k; ++t)
+        neighbors[i * k + t] = std::uint32_t(positions[t + 1]);
+      scales[i] = offset_scale(scratch.neighborhood, normals[i], scratch.work);
+      areas[i] = CGAL_PI * scratch.neighborhood.radius * scratch.neighborhood.radius / double(positions.size());
+    }
+  });
+  // Each pair once: a mutual pair by its first point, else by the point
+  // whose neighbor the other is. The weight does not depend on which.
+  std::vector<std::vector<Signed_edge> > blocks((size + 4095) / 4096);
+  for_each_block<ConcurrencyTag>(blocks.size(), no_progress, [] { return 0; }, [&](std::size_t begin, std::size_t end, int) {
+    for(std::size_t block = begin; block < end; ++block)
+      for(std::size_t i = block * 4096; i < (std::min)(size, (block + 1) * 4096); ++i)
+        for(std::size_t t = 0; t < k; ++t)
+        {
+          const std::uint32_t j = neighbors[i * k + t];
+          const auto first = neighbors.begin() + std::ptrdiff_t(j) * k;
+          if(j < i && std::find(first, first + k, std::uint32_t(i)) != first + k)
+            continue;
+          const Eigen::Vector3d d = search.point(j) - search.point(i);
+          blocks[block].push_back({ std::uint32_t((std::min<std::size_t>)(i, j)), std::uint32_t((std::max<std::size_t>)(i, j)),
+                                    signed_weight(d, normals[i], normals[j], scales[i], scales[j]) });
+        }
+  });
+  std::vector<Signed_edge> edges;
+  for(const std::vector<Signed_edge>& block : blocks)
+    edges.insert(edges.end(), block.begin(), block.end());
+  return edges;
+}
+
+} // namespace internal
+} // namespace RRHT
+} // namespace CGAL
+
+#endif // CGAL_RRHT_INTERNAL_ORIENTATION_EDGES_H
