@@ -95,9 +95,9 @@ TEST_CASE("Consistent orientation of closed CAD shapes: outward across sharp edg
     const auto end = estimate_and_orient(c.cloud);
     INFO(c.name << ", noise " << c.noise << "%");
     CHECK(end == c.cloud.end());
-    // MST propagation on these normals flips whole faces of the cube and
-    // the plate (about 50% and 49% wrong at 100k points). The sides of the
-    // plate, 3 neighbor spacings apart at 20k points, hold the most errors.
+    // CGAL::mst_orient_normals() on the noisy plate's normals flips one
+    // whole side. The sides of the plate, 3 neighbor spacings apart at 20k
+    // points, hold the most errors here too.
     CHECK(share_outward(c.cloud, end) >= (c.name == std::string("plate 2% thick") ? 0.975 : 0.995));
   }
 }
