@@ -10,6 +10,7 @@
 
 #include <CGAL/RRHT/parameters.h>
 
+#include <CGAL/RRHT/internal/Elements.h>
 #include <CGAL/RRHT/internal/Neighbor_search.h>
 #include <CGAL/RRHT/internal/check_parameters.h>
 #include <CGAL/RRHT/internal/consistent_orientation.h>
@@ -173,12 +174,10 @@ typename PointRange::iterator rrht_orient_normals(PointRange& points,
   const auto direction = get_parameter(np, rrht_np::direction);
   const auto viewpoint = get_parameter(np, rrht_np::viewpoint);
   const auto viewpoint_map = get_parameter(np, rrht_np::viewpoint_map);
-  constexpr bool with_direction =
-    !std::is_same<typename std::decay<decltype(direction)>::type, internal_np::Param_not_found>::value;
-  constexpr bool with_viewpoint =
-    !std::is_same<typename std::decay<decltype(viewpoint)>::type, internal_np::Param_not_found>::value;
-  constexpr bool with_viewpoint_map =
-    !std::is_same<typename std::decay<decltype(viewpoint_map)>::type, internal_np::Param_not_found>::value;
+  using parameters::is_default_parameter;
+  constexpr bool with_direction = !is_default_parameter<NamedParameters, rrht_np::direction_t>::value;
+  constexpr bool with_viewpoint = !is_default_parameter<NamedParameters, rrht_np::viewpoint_t>::value;
+  constexpr bool with_viewpoint_map = !is_default_parameter<NamedParameters, rrht_np::viewpoint_map_t>::value;
   check(int(with_direction) + int(with_viewpoint) + int(with_viewpoint_map) <= 1,
         "give at most one of direction, viewpoint and viewpoint_map");
   auto to_eigen = [](const auto& v) {
@@ -232,26 +231,27 @@ typename PointRange::iterator rrht_orient_normals(PointRange& points,
   }
   else
   {
+    // The oriented points by their position from the beginning of the range.
     std::vector<RRHT::internal::Neighbor_search::Indexed_point> cloud;
-    std::vector<typename PointRange::iterator> elements;
+    RRHT::internal::Elements<typename PointRange::iterator> elements;
     for(auto it = points.begin(); it != first_unoriented; ++it)
     {
       const auto& p = get(point_map, *it);
       cloud.emplace_back(RRHT::internal::Neighbor_search::Point(CGAL::to_double(p.x()), CGAL::to_double(p.y()),
                                                                 CGAL::to_double(p.z())),
-                         elements.size());
-      elements.push_back(it);
+                         cloud.size());
+      elements.add(it);
     }
     if(cloud.empty())
       return first_unoriented;
     const RRHT::internal::Neighbor_search search(std::move(cloud), ConcurrencyTag());
     std::vector<Eigen::Vector3d> normals(search.size());
     for(std::size_t v = 0; v < search.size(); ++v)
-      normals[v] = to_eigen(get(normal_map, *elements[search.input_index(v)])).normalized();
+      normals[v] = to_eigen(get(normal_map, *elements.at(points.begin(), search.input_index(v)))).normalized();
     const std::vector<int> signs = RRHT::internal::consistent_orientation<ConcurrencyTag>(search, normals, k);
     for(std::size_t v = 0; v < search.size(); ++v)
       if(signs[v] < 0)
-        flip(*elements[search.input_index(v)]);
+        flip(*elements.at(points.begin(), search.input_index(v)));
     return first_unoriented;
   }
 }
