@@ -199,6 +199,14 @@ TEST_CASE("Orientation of bad input: documented results and clear errors", "[ori
 
     CHECK(share_outward(cloud, end) >= 0.99);
   }
+  SECTION("duplicate points")
+  {
+    Cloud doubled = cloud;
+    doubled.insert(doubled.end(), cloud.begin(), cloud.end());
+    const auto end = CGAL::rrht_orient_normals<CGAL::Parallel_if_available_tag>(doubled, 18, maps);
+    CHECK(std::distance(end, doubled.end()) == 6);
+    CHECK(share_outward(doubled, end) >= 0.99);
+  }
   SECTION("fewer points than neighbors")
   {
     Cloud few(cloud.begin() + 20, cloud.begin() + 24);

@@ -35,14 +35,17 @@ struct Signed_edge
   double weight;
 };
 
-/// The points' offsets from the tangent plane of `normal` at the point:
+/// The neighbors' offsets from the tangent plane of `normal` at the point
+/// at position `point`:
 /// their first quartile, in absolute value, is the scale of the noise across
 /// the surface that the other side of a thin part does not inflate.
-inline double offset_scale(const Neighborhood& neighborhood, const Eigen::Vector3d& normal, std::vector<double>& work)
+inline double offset_scale(const Neighborhood& neighborhood, std::size_t point, const Eigen::Vector3d& normal,
+                           std::vector<double>& work)
 {
   work.clear();
-  for(std::size_t t = 1; t < neighborhood.points.size(); ++t)
-    work.push_back(std::abs(normal.dot(neighborhood.points[t])));
+  for(std::size_t t = 0; t < neighborhood.points.size(); ++t)
+    if(neighborhood.positions[t] != point)
+      work.push_back(std::abs(normal.dot(neighborhood.points[t])));
   if(work.empty())
     return 0;
   const auto quartile = work.begin() + (work.size() - 1) / 4;
@@ -113,10 +116,14 @@ std::vector<Signed_edge> orientation_edges(const Neighbor_search& search, const 
     for(std::size_t i = begin; i < end; ++i)
     {
       search.find(i, k, 0., scratch.neighborhood, scratch.search);
+      // The point itself is not always first: a duplicate with a smaller id
+      // comes before it.
       const std::vector<std::size_t>& positions = scratch.neighborhood.positions;
-      for(std::size_t t = 0; t < k; ++t)
-        neighbors[i * k + t] = std::uint32_t(positions[t + 1]);
-      scales[i] = offset_scale(scratch.neighborhood, normals[i], scratch.work);
+      std::size_t t = 0;
+      for(std::size_t position : positions)
+        if(position != i && t < k)
+          neighbors[i * k + t++] = std::uint32_t(position);
+      scales[i] = offset_scale(scratch.neighborhood, i, normals[i], scratch.work);
       areas[i] = CGAL_PI * scratch.neighborhood.radius * scratch.neighborhood.radius / double(positions.size());
     }
   });
