@@ -39,10 +39,13 @@ class Signed_agglomeration
 {
 public:
   Signed_agglomeration(std::size_t size, const std::vector<Signed_edge>& edges)
-    : m_parent(size), m_sign(size, 1)
   {
+    // A forest of the joins: each cluster's parent and its sign relative to
+    // the parent.
+    std::vector<std::uint32_t> parent(size);
+    std::vector<signed char> sign_to_parent(size, 1);
     for(std::size_t v = 0; v < size; ++v)
-      m_parent[v] = std::uint32_t(v);
+      parent[v] = std::uint32_t(v);
     std::vector<Adjacency> adjacency(size);
     for(const Signed_edge& e : edges)
     {
@@ -60,7 +63,7 @@ public:
       candidates.pop();
       // Skip what a join made stale: a cluster joined to another, or a sum
       // that has changed since (its new value was pushed then).
-      if(m_parent[best.a] != best.a || m_parent[best.b] != best.b)
+      if(parent[best.a] != best.a || parent[best.b] != best.b)
         continue;
       const auto between = adjacency[best.a].find(best.b);
       if(between == adjacency[best.a].end() || between->second != best.sum)
@@ -70,8 +73,8 @@ public:
       if(adjacency[joined].size() > adjacency[kept].size())
         std::swap(kept, joined);
       const double flip = best.sum < 0 ? -1. : 1.;
-      m_parent[joined] = kept;
-      m_sign[joined] = static_cast<signed char>(flip);
+      parent[joined] = kept;
+      sign_to_parent[joined] = static_cast<signed char>(flip);
       adjacency[kept].erase(joined);
       for(const auto& neighbor : adjacency[joined])
       {
@@ -93,10 +96,10 @@ public:
     {
       std::uint32_t root = std::uint32_t(v);
       int sign = 1;
-      while(m_parent[root] != root)
+      while(parent[root] != root)
       {
-        sign *= m_sign[root];
-        root = m_parent[root];
+        sign *= sign_to_parent[root];
+        root = parent[root];
       }
       m_root_of.push_back(root);
       m_sign_in_cluster.push_back(static_cast<signed char>(sign));
@@ -126,8 +129,6 @@ private:
     }
   };
 
-  std::vector<std::uint32_t> m_parent;
-  std::vector<signed char> m_sign; // relative to the parent
   std::vector<std::uint32_t> m_root_of;
   std::vector<signed char> m_sign_in_cluster;
 };
