@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <queue>
 #include <unordered_map>
 #include <utility>
@@ -52,11 +53,12 @@ public:
       adjacency[e.a][e.b] += e.weight;
       adjacency[e.b][e.a] += e.weight;
     }
-    std::priority_queue<Candidate> candidates;
+    std::vector<Candidate> initial;
     for(std::size_t a = 0; a < size; ++a)
       for(const auto& neighbor : adjacency[a])
         if(a < neighbor.first && neighbor.second != 0)
-          candidates.push({ std::abs(neighbor.second), std::uint32_t(a), neighbor.first, neighbor.second });
+          initial.push_back({ neighbor.second, std::uint32_t(a), neighbor.first });
+    std::priority_queue<Candidate> candidates(std::less<Candidate>(), std::move(initial));
     while(!candidates.empty())
     {
       const Candidate best = candidates.top();
@@ -86,7 +88,7 @@ public:
         other.erase(joined);
         other[kept] = sum;
         if(sum != 0)
-          candidates.push({ std::abs(sum), (std::min)(kept, neighbor.first), (std::max)(kept, neighbor.first), sum });
+          candidates.push({ sum, (std::min)(kept, neighbor.first), (std::max)(kept, neighbor.first) });
       }
       Adjacency().swap(adjacency[joined]);
     }
@@ -117,14 +119,14 @@ private:
 
   struct Candidate
   {
-    double strength; // |sum|
-    std::uint32_t a, b;
     double sum;
+    std::uint32_t a, b;
     // The strongest first, then the smallest vertex numbers.
     bool operator<(const Candidate& other) const
     {
-      if(strength != other.strength)
-        return strength < other.strength;
+      const double strength = std::abs(sum), other_strength = std::abs(other.sum);
+      if(strength != other_strength)
+        return strength < other_strength;
       return a != other.a ? a > other.a : b > other.b;
     }
   };

@@ -10,6 +10,7 @@
 
 #include <CGAL/RRHT/internal/Neighbor_search.h>
 #include <CGAL/RRHT/internal/Progress.h>
+#include <CGAL/RRHT/internal/Sheets.h>
 #include <CGAL/RRHT/internal/for_each_block.h>
 
 #include <CGAL/number_type_config.h>
@@ -55,14 +56,16 @@ inline double offset_scale(const Neighborhood& neighborhood, std::size_t point, 
 
 /// The signed weight of the edge from a point with unit normal `ni` to a
 /// neighbor at `d` from it with unit normal `nj`, their offset scales `si`
-/// and `sj`.
+/// and `sj` and the sheets of their neighborhoods `hi` and `hj`.
 ///
 /// - Nearly parallel normals (within 30 degrees) are on one smooth sheet when
 ///   each point lies within the noise of the other's tangent plane (with
 ///   the bend that the angle of the normals implies): their dot product
-///   says whether they agree (Hoppe et al. 1992). Farther apart, they are two
-///   sheets (the sides of a thin part, or of a narrow gap) whose relation the
-///   pair cannot tell: no evidence.
+///   says whether they agree (Hoppe et al. 1992). Farther apart, when each
+///   is on the sheet next to the other's (`Sheets`) across the chord, they
+///   are the two sides of a thin part, or of a narrow gap, whose outward
+///   normals point away from each other, or towards each other: opposite.
+///   Otherwise, no evidence.
 /// - Across a sharp edge, the dot product is noise (perpendicular normals).
 ///   The normal at one end reflected through the plane that bisects the
 ///   chord is the normal at the other end of a circular arc between them:
@@ -70,7 +73,7 @@ inline double offset_scale(const Neighborhood& neighborhood, std::size_t point, 
 ///   reflection criterion of Xie et al. 2003, after König and Gumhold 2009),
 ///   and it is confident across a 90 degree edge.
 inline double signed_weight(const Eigen::Vector3d& d, const Eigen::Vector3d& ni, const Eigen::Vector3d& nj, double si,
-                            double sj)
+                            double sj, const Sheets& hi, const Sheets& hj)
 {
   const double cos_parallel = 0.8660254037844386; // cos 30 degrees
   const double noise_factor = 7, normal_tolerance = 0.03;
@@ -79,9 +82,16 @@ inline double signed_weight(const Eigen::Vector3d& d, const Eigen::Vector3d& ni,
     return c;
   if(std::abs(c) > cos_parallel)
   {
+    const double oi = ni.dot(d), oj = -nj.dot(d); // each one's offset from the other's tangent plane
     const double half_angle_sine = std::sqrt((std::max)(0., (1 - std::abs(c)) / 2));
     const double band = noise_factor * (std::min)(si, sj) + length * (half_angle_sine + normal_tolerance);
-    return std::abs(ni.dot(d)) <= band && std::abs(nj.dot(d)) <= band ? c : 0.;
+    if(std::abs(oi) <= band && std::abs(oj) <= band)
+      return c;
+    // Across a thin part the chord runs along the normals; across a step or
+    // the rim of a plate, whose near points may take the rim's normal, it is
+    // oblique.
+    const double along = 0.7071067811865476 * length; // within 45 degrees
+    return hi.side(oi) == -1 && hj.side(oj) == -1 && std::abs(oi) > along && std::abs(oj) > along ? -c : 0.;
   }
   const Eigen::Vector3d u = d / length;
   return c - 2 * ni.dot(u) * nj.dot(u);
@@ -99,9 +109,12 @@ std::vector<Signed_edge> orientation_edges(const Neighbor_search& search, const 
 {
   const std::size_t size = search.size();
   k = static_cast<unsigned int>((std::min<std::size_t>)(k, size - 1));
-  // The neighbors of every point, k per point, and their offset scales.
+  // The neighbors of every point, k per point, their offset scales, and the
+  // offsets of the point and its neighbors from its tangent plane.
+  const std::size_t row = k + 1;
   std::vector<std::uint32_t> neighbors(size * k);
-  std::vector<double> scales(size);
+  std::vector<double> scales(size), offsets(size * row), spreads(size);
+  std::vector<std::size_t> counts(size);
   areas.assign(size, 0.);
   struct Scratch
   {
@@ -124,7 +137,25 @@ std::vector<Signed_edge> orientation_edges(const Neighbor_search& search, const 
         if(position != i && t < k)
           neighbors[i * k + t++] = std::uint32_t(position);
       scales[i] = offset_scale(scratch.neighborhood, i, normals[i], scratch.work);
+      counts[i] = (std::min)(positions.size(), row);
+      for(std::size_t u = 0; u < counts[i]; ++u)
+        offsets[i * row + u] = normals[i].dot(scratch.neighborhood.points[u]);
+      scratch.work.assign(offsets.begin() + std::ptrdiff_t(i * row), offsets.begin() + std::ptrdiff_t(i * row + counts[i]));
+      spreads[i] = Sheets::spread_within_sheets(scratch.work);
       areas[i] = CGAL_PI * scratch.neighborhood.radius * scratch.neighborhood.radius / double(positions.size());
+    }
+  });
+  // The noise across a sheet, over the cloud.
+  std::vector<double> spread_order(spreads);
+  std::nth_element(spread_order.begin(), spread_order.begin() + std::ptrdiff_t(size / 2), spread_order.end());
+  const double noise = spread_order[size / 2];
+  std::vector<Sheets> sheets(size);
+  for_each_block<ConcurrencyTag>(size, no_progress, [] { return std::vector<double>(); },
+                                 [&](std::size_t begin, std::size_t end, std::vector<double>& work) {
+    for(std::size_t i = begin; i < end; ++i)
+    {
+      work.assign(offsets.begin() + std::ptrdiff_t(i * row), offsets.begin() + std::ptrdiff_t(i * row + counts[i]));
+      sheets[i] = Sheets(work, noise);
     }
   });
   // Each pair once: a mutual pair by its first point, else by the point
@@ -141,7 +172,7 @@ std::vector<Signed_edge> orientation_edges(const Neighbor_search& search, const 
             continue;
           const Eigen::Vector3d d = search.point(j) - search.point(i);
           blocks[block].push_back({ std::uint32_t((std::min<std::size_t>)(i, j)), std::uint32_t((std::max<std::size_t>)(i, j)),
-                                    signed_weight(d, normals[i], normals[j], scales[i], scales[j]) });
+                                    signed_weight(d, normals[i], normals[j], scales[i], scales[j], sheets[i], sheets[j]) });
         }
   });
   std::vector<Signed_edge> edges;

@@ -1,0 +1,158 @@
+// Copyright (c) 2026 The CGAL RRHT authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The sheets of the surface that a neighborhood holds: one, or the sides of
+// thin parts and narrow gaps stacked along the normal, told apart by the
+// offsets of the points from the tangent plane.
+
+#ifndef CGAL_RRHT_INTERNAL_SHEETS_H
+#define CGAL_RRHT_INTERNAL_SHEETS_H
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace RRHT {
+namespace internal {
+
+/// The sheets of a point's neighborhood: the groups of its points' offsets
+/// from its tangent plane, the point's own group, and whether an offset is
+/// on the point's sheet or on the next one.
+class Sheets
+{
+public:
+  /// One sheet: every offset is on it.
+  Sheets() = default;
+
+  /// The sheets of the offsets `offsets` (the point's own, 0, among them;
+  /// sorted on return), given the spread of the offsets within a sheet over
+  /// the whole cloud, `noise` (`spread_within_sheets()`'s median).
+  ///
+  /// The sorted offsets are split into three, else two, groups of least
+  /// squared deviation (1D k-means, exact), each of two offsets or more. The
+  /// split stands when the gap between any two adjacent groups' means is
+  /// over 4 times the spread within the groups and 5 times `noise`: the
+  /// local test keeps one noisy sheet from being split, the global one a
+  /// neighborhood whose few offsets happen to bunch up. Otherwise it is one
+  /// sheet.
+  Sheets(std::vector<double>& offsets, double noise)
+  {
+    for(int groups = 3; groups >= 2; --groups)
+    {
+      Split split(offsets, groups);
+      if(!split.found)
+        continue;
+      bool apart = true;
+      double closest = 0;
+      for(int g = 1; g < groups; ++g)
+      {
+        const double gap = split.means[g] - split.means[g - 1];
+        apart = apart && gap > local_ratio * split.spread && gap > global_ratio * noise;
+        closest = (g == 1) ? gap : (std::min)(closest, gap);
+      }
+      if(!apart)
+        continue;
+      m_groups = groups;
+      std::copy(split.means, split.means + 3, m_means);
+      m_margin = unsure_share * closest / 2;
+      for(int g = 1; g < groups; ++g)
+        if(std::abs(m_means[g]) < std::abs(m_means[m_own]))
+          m_own = g;
+      return;
+    }
+  }
+
+  /// The spread within the groups of the best split of `offsets` (sorted on
+  /// return) into two: the noise across one sheet, or a little less, where
+  /// the neighborhood holds one sheet, and across each where it holds two.
+  static double spread_within_sheets(std::vector<double>& offsets)
+  {
+    const Split split(offsets, 2);
+    return split.found ? split.spread : 0.;
+  }
+
+  /// +1 if a point at offset `offset` is on the point's own sheet, -1 if on
+  /// an adjacent one, 0 if it is too close to the boundary between two
+  /// sheets to tell or on a sheet farther away.
+  int side(double offset) const
+  {
+    int group = 0;
+    for(int g = 1; g < m_groups; ++g)
+    {
+      const double boundary = (m_means[g - 1] + m_means[g]) / 2;
+      if(std::abs(offset - boundary) < m_margin)
+        return 0;
+      if(offset > boundary)
+        group = g;
+    }
+    const int apart = std::abs(group - m_own);
+    return apart == 0 ? 1 : apart == 1 ? -1 : 0;
+  }
+
+private:
+  static constexpr double local_ratio = 4, global_ratio = 5;
+  // The share of half the gap between two sheets, on either side of the
+  // boundary, in which an offset is on neither for sure.
+  static constexpr double unsure_share = 0.2;
+  static constexpr std::size_t min_group = 2;
+
+  /// The split of sorted offsets into 2 or 3 contiguous groups of least
+  /// squared deviation from their means, by trying every split (at most
+  /// n^2 / 2 for about 20 offsets).
+  struct Split
+  {
+    bool found = false;
+    double means[3] = { 0, 0, 0 };
+    double spread = 0; // the standard deviation within the groups
+
+    Split(std::vector<double>& offsets, int groups)
+    {
+      const std::size_t n = offsets.size();
+      if(n < std::size_t(groups) * min_group)
+        return;
+      std::sort(offsets.begin(), offsets.end());
+      std::vector<double> sum(n + 1, 0.), sum2(n + 1, 0.);
+      for(std::size_t t = 0; t < n; ++t)
+      {
+        sum[t + 1] = sum[t] + offsets[t];
+        sum2[t + 1] = sum2[t] + offsets[t] * offsets[t];
+      }
+      // The squared deviation of the offsets [a, b) from their mean.
+      auto deviation = [&](std::size_t a, std::size_t b) {
+        const double s = sum[b] - sum[a];
+        return (std::max)(0., sum2[b] - sum2[a] - s * s / double(b - a));
+      };
+      double best = -1;
+      std::size_t first = 0, second = n;
+      for(std::size_t s1 = min_group; s1 + min_group * std::size_t(groups - 1) <= n; ++s1)
+        for(std::size_t s2 = (groups == 2 ? n : s1 + min_group); s2 <= n && (groups == 2 || s2 + min_group <= n); ++s2)
+        {
+          const double cost = deviation(0, s1) + deviation(s1, s2) + (s2 < n ? deviation(s2, n) : 0.);
+          if(best < 0 || cost < best)
+          {
+            best = cost;
+            first = s1;
+            second = s2;
+          }
+        }
+      found = true;
+      const std::size_t bounds[4] = { 0, first, second, n };
+      for(int g = 0; g < groups; ++g)
+        means[g] = (sum[bounds[g + 1]] - sum[bounds[g]]) / double(bounds[g + 1] - bounds[g]);
+      spread = std::sqrt(best / double(n - std::size_t(groups)));
+    }
+  };
+
+  int m_groups = 1;
+  double m_means[3] = { 0, 0, 0 };
+  double m_margin = 0;
+  int m_own = 0;
+};
+
+} // namespace internal
+} // namespace RRHT
+} // namespace CGAL
+
+#endif // CGAL_RRHT_INTERNAL_SHEETS_H
