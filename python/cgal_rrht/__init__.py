@@ -5,26 +5,30 @@
 ``cgal_rrht.estimate_normals(points)`` runs ``CGAL::rrht_estimate_normals()``,
 the Robust Randomized Hough Transform of A. Boulch and R. Marlet, "Fast and
 Robust Normal Estimation for Point Clouds with Sharp Features", Computer
-Graphics Forum 31(5), 2012. ``cgal_rrht.open3d.estimate_normals(pcd)`` fills
-the normals of an Open3D point cloud.
+Graphics Forum 31(5), 2012. ``cgal_rrht.orient_normals(points, normals)``
+runs ``CGAL::rrht_orient_normals()``: towards a direction, towards viewpoints,
+or consistently, out of closed surfaces. ``cgal_rrht.open3d`` does both on an
+Open3D point cloud.
 """
 
 from __future__ import annotations
 
-from typing import Literal, Optional, Tuple, Union, overload
+from typing import Any, Dict, Literal, Optional, Tuple, Union, overload
 
 import numpy as np
 import numpy.typing as npt
 
 from . import _core
 
-__all__ = ["estimate_normals", "SAMPLINGS", "AGGREGATIONS"]
+__all__ = ["estimate_normals", "orient_normals", "SAMPLINGS", "AGGREGATIONS"]
 __version__ = "0.1.0"
 
 #: The values of ``sampling``: RRHT_Points, RRHT_Cubes, RRHT_Unif (paper, Section 5).
 SAMPLINGS = ("points", "cubes", "unif")
 #: The values of ``aggregation``: RRHT_m, RRHT_b, RRHT_c (paper, Section 4).
 AGGREGATIONS = ("mean", "best", "cluster")
+# The neighbors of estimate_normals(orient="consistent"): those of rrht_normals --orient.
+_CONSISTENT_K = 18
 
 
 @overload
@@ -49,6 +53,8 @@ def estimate_normals(
     neighbor_ids: Optional[npt.ArrayLike] = ...,
     threads: Optional[int] = ...,
     progress: bool = ...,
+    orient: Union[None, str, npt.ArrayLike] = ...,
+    viewpoint: Optional[npt.ArrayLike] = ...,
     return_confidence: Literal[False] = ...,
     return_support: Literal[False] = ...,
 ) -> npt.NDArray[np.float64]: ...
@@ -76,6 +82,8 @@ def estimate_normals(
     neighbor_ids: Optional[npt.ArrayLike] = ...,
     threads: Optional[int] = ...,
     progress: bool = ...,
+    orient: Union[None, str, npt.ArrayLike] = ...,
+    viewpoint: Optional[npt.ArrayLike] = ...,
     return_confidence: bool = ...,
     return_support: bool = ...,
 ) -> Union[npt.NDArray[np.float64], Tuple[npt.NDArray[np.float64], ...]]: ...
@@ -102,6 +110,8 @@ def estimate_normals(
     neighbor_ids: Optional[npt.ArrayLike] = None,
     threads: Optional[int] = None,
     progress: bool = False,
+    orient: Union[None, str, npt.ArrayLike] = None,
+    viewpoint: Optional[npt.ArrayLike] = None,
     return_confidence: bool = False,
     return_support: bool = False,
 ) -> Union[npt.NDArray[np.float64], Tuple[npt.NDArray[np.float64], ...]]:
@@ -197,6 +207,20 @@ def estimate_normals(
         The number of threads for this call, 1 to 1024; default: all cores.
     progress : bool, default False
         Show a progress bar (tqdm) on stderr.
+    orient : {"consistent", "up"} or array_like of 3 numbers, optional
+        Orient the normals once estimated, as :func:`orient_normals` does
+        (beyond the paper); default: not oriented, the normals being then
+        the same as without this parameter, bit for bit. ``"consistent"``:
+        consistently from the points alone, out of closed surfaces, with 18
+        neighbors, as ``rrht_normals --orient`` (call
+        :func:`orient_normals` for another number); not with ``neighbors``,
+        since a part of a cloud cannot be oriented consistently with the
+        rest on its own. ``"up"`` or a direction (3 numbers, finite, not
+        null): each normal is flipped where it points against the direction.
+    viewpoint : array_like, shape (3,) or (N, 3), optional
+        Orient the normals towards this viewpoint (a scanner's position), or
+        each towards its own row (the position of the sensor that saw the
+        point), as :func:`orient_normals` does; not with ``orient``.
     return_confidence : bool, default False
         Also return the confidence of each normal (beyond the paper; the
         named parameter ``confidence_map`` of the C++ function).
@@ -208,11 +232,11 @@ def estimate_normals(
     Returns
     -------
     normals : numpy.ndarray, shape (N, 3), float64
-        Unit normals, not oriented (``open3d``'s
-        ``orient_normals_consistent_tangent_plane`` or CGAL's
-        ``mst_orient_normals`` orient them); the zero vector where no plane
-        can be formed (fewer than 3 distinct or only collinear neighbors, a
-        non-finite point).
+        Unit normals, not oriented unless ``orient`` or ``viewpoint`` is
+        given (:func:`orient_normals` orients them afterwards); the zero
+        vector where no plane can be formed (fewer than 3 distinct or only
+        collinear neighbors, a non-finite point), which no orientation
+        changes.
     confidence : numpy.ndarray, shape (N,), float64
         Only with ``return_confidence``: from 0 to 1, the share of all the
         planes drawn at the point, over the rotated accumulators, that voted
@@ -238,8 +262,11 @@ def estimate_normals(
         not of shape (N,) (``neighbor_ids`` (M,)) or negative, if only one
         of ``ids`` and ``neighbor_ids`` is given with ``neighbors``, if a
         parameter is out of its
-        range (with the message of ``CGAL::rrht_estimate_normals()``), or if
-        ``sampling`` or ``aggregation`` is an unknown name.
+        range (with the message of ``CGAL::rrht_estimate_normals()``), if
+        ``sampling`` or ``aggregation`` is an unknown name, or if ``orient``
+        or ``viewpoint`` is wrong (as in :func:`orient_normals`), both are
+        given, or ``orient`` is ``"consistent"`` with ``neighbors``. All
+        of this is checked before the estimation starts.
     KeyboardInterrupt
         On Ctrl-C, which stops the estimation within a fraction of a second
         (seen after the kd-tree of the cloud is built, which takes about a
@@ -288,21 +315,208 @@ def estimate_normals(
         raise ValueError("neighbor_ids without neighbors")
     if extra is not None and id_array is not None:
         id_array = np.concatenate([id_array, _ids(neighbor_ids, len(extra), "neighbor_ids")])
+    # Checked now, not after a long estimation.
+    orientation = _estimation_orientation(orient, viewpoint, len(array), arguments["threads"], extra is not None)
     if not progress:
-        return _results(_core.estimate_normals(array, extra, id_array, progress=None, **arguments))
-    try:
-        from tqdm.auto import tqdm
-    except ImportError as error:
-        raise ImportError("progress=True needs tqdm (pip install tqdm; Debian: python3-tqdm)") from error
+        results = _core.estimate_normals(array, extra, id_array, progress=None, **arguments)
+    else:
+        try:
+            from tqdm.auto import tqdm
+        except ImportError as error:
+            raise ImportError("progress=True needs tqdm (pip install tqdm; Debian: python3-tqdm)") from error
 
-    with tqdm(total=len(array), unit="pt", desc="cgal_rrht", unit_scale=True) as bar:
+        with tqdm(total=len(array), unit="pt", desc="cgal_rrht", unit_scale=True) as bar:
 
-        def advance(done: float) -> None:
-            bar.update(int(done * len(array)) - bar.n)
+            def advance(done: float) -> None:
+                bar.update(int(done * len(array)) - bar.n)
 
-        results = _core.estimate_normals(array, extra, id_array, progress=advance, **arguments)
-        advance(1.0)
+            results = _core.estimate_normals(array, extra, id_array, progress=advance, **arguments)
+            advance(1.0)
+    if orientation is not None:
+        _core.orient_normals(array, results[0], **orientation)  # the fresh output, in place
     return _results(results)
+
+
+def orient_normals(
+    points: npt.ArrayLike,
+    normals: npt.ArrayLike,
+    *,
+    direction: Union[None, str, npt.ArrayLike] = None,
+    viewpoint: Optional[npt.ArrayLike] = None,
+    k: int = 18,
+    threads: Optional[int] = None,
+) -> npt.NDArray[np.float64]:
+    """Orients normals towards a direction or viewpoints, or consistently from the points alone.
+
+    Runs ``CGAL::rrht_orient_normals()`` (beyond the paper). Each normal
+    keeps its line and gets a sign:
+
+    - with ``direction``, it is flipped where it points against that
+      direction (aerial surveys: ``"up"``);
+    - with ``viewpoint``, where it points away from the viewpoint, or from
+      the point's own sensor position (terrestrial scans);
+    - with neither, the normals are oriented consistently from the points
+      alone, out of the solid where the surface is closed.
+
+    The consistent orientation joins the points into consistently oriented
+    clusters on the graph of their ``k`` nearest neighbors, trusting the
+    agreement of two normals on one smooth sheet and, across a sharp edge,
+    the reflection criterion of Xie et al. (2003), which keeps it right
+    across the edges that RRHT keeps sharp. Each cluster is then turned so
+    that the flux of the position through it is positive (outward on a
+    closed surface), and flipped where it lies inside an odd number of
+    others (the walls of a cavity point into it). Separate objects are each
+    oriented so; an open surface ends up oriented to one side, which one
+    being the cloud's choice. The user manual (section "Orienting the
+    normals") says more, and what it cannot do.
+
+    Parameters
+    ----------
+    points : array_like, shape (N, 3), float64 or float32
+        The points. A C-contiguous float64 array is read in place.
+    normals : array_like, shape (N, 3), float64 or float32
+        Their normals, such as those of :func:`estimate_normals`; not
+        changed. Their length does not matter.
+    direction : "up" or array_like of 3 numbers, optional
+        The direction the normals should point to, finite and not null;
+        ``"up"`` is (0, 0, 1), as PDAL's ``always_up``.
+    viewpoint : array_like, shape (3,) or (N, 3), optional
+        The position the normals should point to, such as a scanner's: each
+        normal ``n`` at a point ``p`` with ``n . (viewpoint - p) < 0`` is
+        flipped, as by Open3D's ``orient_normals_towards_camera_location``
+        and PCL's ``flipNormalTowardsViewpoint``. An (N, 3) array gives each
+        point its own viewpoint, the position of the sensor that saw it (a
+        row with a NaN or infinite coordinate leaves its normal as it is).
+        Not with ``direction``.
+    k : int, default 18
+        The number of neighbors of the consistent orientation, at least 2;
+        not used with ``direction`` or ``viewpoint``.
+    threads : int, optional
+        The number of threads for this call, 1 to 1024; default: all cores.
+
+    Returns
+    -------
+    oriented : numpy.ndarray, shape (N, 3), float64
+        A new array, in the order of the input: row i is ``normals[i]`` or
+        ``-normals[i]``. Rows that cannot be oriented are ``normals[i]``
+        unchanged: a point with a NaN or infinite coordinate, a zero normal
+        or one with a NaN or infinite coordinate (``estimate_normals`` gives
+        the zero vector where it finds no plane), a non-finite row of
+        per-point viewpoints. A normal perpendicular to ``direction`` keeps
+        its sign, and so does the normal of a point equal to its viewpoint.
+        The consistent orientation orients the other points among
+        themselves.
+
+    Raises
+    ------
+    TypeError
+        If ``points``, ``normals`` or an (N, 3) ``viewpoint`` is an array of
+        another dtype than float64 or float32, or ``k`` or ``threads`` is not
+        an integer.
+    ValueError
+        If ``points`` is not of shape (N, 3), ``normals`` not of its shape,
+        ``viewpoint`` neither (3,) nor (N, 3), ``direction`` neither "up"
+        nor 3 numbers, if both ``direction`` and ``viewpoint`` are given, if
+        ``direction`` is null or not finite, a (3,) ``viewpoint`` not finite,
+        or ``k`` below 2 without them (with the message of
+        ``CGAL::rrht_orient_normals()``), or ``threads`` out of range.
+
+    Notes
+    -----
+    The result depends only on the arguments: it is the same, bit for bit,
+    for any ``threads``, and as ``CGAL::rrht_orient_normals()`` and
+    ``rrht_normals --orient`` (``k`` = 18) give on the same points and
+    normals. ``estimate_normals(points, orient=...)`` estimates and orients
+    in one call. The GIL is released while it runs; a Ctrl-C is seen when it
+    ends. Towards a direction or viewpoints, each point is oriented on its
+    own, so a cloud can be oriented by parts (``cgal_rrht.tiles``); a
+    consistent orientation needs the whole cloud.
+
+    Examples
+    --------
+    >>> import numpy as np, cgal_rrht
+    >>> points = np.random.default_rng(0).normal(size=(2000, 3))
+    >>> points /= np.linalg.norm(points, axis=1, keepdims=True)  # a unit sphere
+    >>> normals = cgal_rrht.estimate_normals(points, k=30)
+    >>> outward = cgal_rrht.orient_normals(points, normals)
+    >>> bool((np.sum(outward * points, axis=1) > 0).all())
+    True
+    >>> up = cgal_rrht.orient_normals(points, normals, direction="up")
+    >>> bool((up[:, 2] >= 0).all())
+    True
+    >>> inward = cgal_rrht.orient_normals(points, normals, viewpoint=[0, 0, 0])
+    >>> bool(np.array_equal(inward, -outward))
+    True
+    """
+    array = _points(points, "points", "N")
+    oriented = _points(normals, "normals", "N")
+    if oriented.shape != array.shape:
+        raise ValueError(f"normals must have the shape of points, {array.shape}, not {oriented.shape}")
+    if np.may_share_memory(oriented, normals):
+        oriented = oriented.copy()
+    orientation = _orientation(direction, viewpoint, len(array))
+    _core.orient_normals(array, oriented, k=_integer(k, "k"),
+                         threads=None if threads is None else _integer(threads, "threads"), **orientation)
+    return oriented
+
+
+def _orientation(direction: object, viewpoint: object, count: int, name: str = "direction",
+                 valid: str = "'up' or three numbers") -> Dict[str, Any]:
+    """The arguments ``direction``, ``viewpoint`` and ``viewpoints`` of ``_core.orient_normals()``.
+
+    ``direction`` ("up" or 3 numbers, called ``name``, whose ``valid``
+    values the messages list) and ``viewpoint`` (3 numbers, or an array
+    (count, 3)) are checked for their form; whether
+    their values are finite and not null, and that only one is given, the
+    C++ side checks, with its message.
+    """
+    arguments: Dict[str, Any] = dict(direction=None, viewpoint=None, viewpoints=None)
+    if direction is not None:
+        if isinstance(direction, str):
+            if direction != "up":
+                raise ValueError(f"unknown {name} {direction!r}: use {valid}")
+            arguments["direction"] = (0.0, 0.0, 1.0)
+        else:
+            vector = np.asarray(direction, dtype=np.float64)
+            if vector.shape != (3,):
+                raise ValueError(f"{name} must be {valid}, not an array of shape {vector.shape}")
+            arguments["direction"] = tuple(float(x) for x in vector)
+    if viewpoint is not None:
+        shape = np.shape(viewpoint)
+        if shape == (3,):
+            arguments["viewpoint"] = tuple(float(x) for x in np.asarray(viewpoint, dtype=np.float64))
+        elif shape == (count, 3):
+            arguments["viewpoints"] = _points(viewpoint, "viewpoint", "N")
+        else:
+            raise ValueError(f"viewpoint must be one point, of shape (3,), or one per point, of shape ({count}, 3), "
+                             f"not {shape}")
+    return arguments
+
+
+def _estimation_orientation(orient: object, viewpoint: object, count: int, threads: Optional[int],
+                            with_neighbors: bool) -> Optional[Dict[str, Any]]:
+    """The arguments of ``_core.orient_normals()`` for ``estimate_normals(orient=..., viewpoint=...)``, or None.
+
+    Checked in full: ``_core.orient_normals()`` is called on no point, so
+    that it checks the values as it will on the normals.
+    """
+    if orient is None and viewpoint is None:
+        return None
+    if orient is not None and viewpoint is not None:
+        raise ValueError("give orient or viewpoint, not both: viewpoint alone orients the normals towards it")
+    if isinstance(orient, str) and orient == "consistent":
+        if with_neighbors:
+            raise ValueError("orient='consistent' cannot be used with neighbors: a part of a cloud would be oriented "
+                             "consistently on its own, not with the rest; orient towards a direction or a viewpoint, "
+                             "or orient the whole cloud")
+        orientation: Dict[str, Any] = dict(direction=None, viewpoint=None, viewpoints=None)
+    else:
+        orientation = _orientation(orient, viewpoint, count, "orient", "'consistent', 'up' or three numbers")
+    orientation.update(k=_CONSISTENT_K, threads=threads)
+    empty = np.empty((0, 3))
+    _core.orient_normals(empty, np.empty((0, 3)),
+                         **dict(orientation, viewpoints=None if orientation["viewpoints"] is None else empty))
+    return orientation
 
 
 def _results(results: tuple) -> Union[npt.NDArray[np.float64], Tuple[npt.NDArray[np.float64], ...]]:

@@ -26,3 +26,12 @@ def estimate_normals(
     return_support: bool,
     progress: Optional[Callable[[float], None]],
 ) -> Tuple[npt.NDArray[np.float64], Optional[npt.NDArray[np.float64]], Optional[npt.NDArray[np.float64]]]: ...
+def orient_normals(
+    points: npt.NDArray[np.float64],
+    normals: npt.NDArray[np.float64],
+    direction: Optional[Tuple[float, float, float]],
+    viewpoint: Optional[Tuple[float, float, float]],
+    viewpoints: Optional[npt.NDArray[np.float64]],
+    k: int,
+    threads: Optional[int],
+) -> None: ...

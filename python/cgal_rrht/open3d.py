@@ -1,16 +1,16 @@
 # Copyright (c) 2026 The CGAL RRHT authors.
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""Open3D interoperability: RRHT normals for an ``open3d.geometry.PointCloud``."""
+"""Open3D interoperability: RRHT normals for an ``open3d.geometry.PointCloud``, and their orientation."""
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, Optional
 
 import numpy as np
 
 import cgal_rrht
 
-__all__ = ["estimate_normals"]
+__all__ = ["estimate_normals", "orient_normals"]
 
 
 def estimate_normals(pcd: Any, **kwargs: Any) -> Any:
@@ -19,15 +19,39 @@ def estimate_normals(pcd: Any, **kwargs: Any) -> Any:
     Like ``pcd.estimate_normals()``, but keeps sharp features. The keyword
     arguments are those of :func:`cgal_rrht.estimate_normals` (``k``,
     ``radius``, ``sampling``, ``seed``...). The normals are unit and not
-    oriented: ``pcd.orient_normals_consistent_tangent_plane(k)`` orients
-    them. Returns ``pcd``, or ``(pcd, confidence)`` with
-    ``return_confidence=True`` (the confidence of each normal, a NumPy
-    array of shape (N,)).
+    oriented, unless ``orient`` or ``viewpoint`` is given:
+
+    - ``orient="consistent"`` replaces a call to
+      ``pcd.orient_normals_consistent_tangent_plane(k)`` after the
+      estimation: the normals are oriented consistently, out of closed
+      surfaces, with 18 neighbors. Open3D propagates the sign along a
+      spanning tree by the dot product of neighboring normals (Hoppe et al.
+      1992), which is noise across the sharp edges that RRHT keeps, so that
+      one wrong edge of the tree flips a whole face, and it leaves the
+      choice of outside to chance; this orientation is sure across sharp
+      edges and points out of the solid (see :func:`cgal_rrht.orient_normals`).
+    - ``orient="up"`` or a direction (3 numbers) replaces
+      ``pcd.orient_normals_to_align_with_direction(direction)``;
+    - ``viewpoint=`` (one point, or one per point) replaces
+      ``pcd.orient_normals_towards_camera_location(camera_location)``.
+
+    Returns ``pcd``, or ``(pcd, confidence)`` with ``return_confidence=True``
+    (the confidence of each normal, a NumPy array of shape (N,)).
 
     Raises
     ------
     TypeError
         If ``pcd`` is not an ``open3d.geometry.PointCloud``.
+
+    Examples
+    --------
+    ::
+
+        import open3d as o3d, cgal_rrht.open3d
+
+        pcd = o3d.io.read_point_cloud("examples/data/fandisk_20k.ply")
+        cgal_rrht.open3d.estimate_normals(pcd, k=50, orient="consistent")
+        mesh, _ = o3d.geometry.TriangleMesh.create_from_point_cloud_poisson(pcd, depth=8)
     """
     import open3d as o3d
 
@@ -38,3 +62,42 @@ def estimate_normals(pcd: Any, **kwargs: Any) -> Any:
     normals, confidence = result if kwargs.get("return_confidence") else (result, None)
     pcd.normals = o3d.utility.Vector3dVector(normals)
     return pcd if confidence is None else (pcd, confidence)
+
+
+def orient_normals(pcd: Any, *, direction: Any = None, viewpoint: Any = None, k: int = 18,
+                   threads: Optional[int] = None) -> Any:
+    """Orients the normals of an ``open3d.geometry.PointCloud`` in place, as :func:`cgal_rrht.orient_normals`.
+
+    For normals already in ``pcd.normals`` (those of
+    :func:`estimate_normals`, Open3D's, or a file's). With neither
+    ``direction`` nor ``viewpoint``, it replaces
+    ``pcd.orient_normals_consistent_tangent_plane(k)``: the normals are
+    oriented consistently, out of closed surfaces, and surely across sharp
+    edges, where Open3D's propagation by the dot product of neighboring
+    normals can flip whole faces. ``direction`` (``"up"`` or 3 numbers)
+    replaces ``pcd.orient_normals_to_align_with_direction()`` and
+    ``viewpoint`` (one point, or an (N, 3) array of one per point)
+    ``pcd.orient_normals_towards_camera_location()``, with the same signs,
+    but for zero normals, which Open3D replaces by the direction (or the
+    unit vector towards the camera) and this leaves as they are. The
+    arguments are those of :func:`cgal_rrht.orient_normals`, whose
+    documentation says what each does and which normals are left as they
+    are. Returns ``pcd``.
+
+    Raises
+    ------
+    TypeError
+        If ``pcd`` is not an ``open3d.geometry.PointCloud``.
+    ValueError
+        If ``pcd`` has points but no normals, or as :func:`cgal_rrht.orient_normals`.
+    """
+    import open3d as o3d
+
+    if not isinstance(pcd, o3d.geometry.PointCloud):
+        raise TypeError(f"pcd must be an open3d.geometry.PointCloud, not {type(pcd).__name__}")
+    if len(pcd.points) and not pcd.has_normals():
+        raise ValueError("pcd has no normals: estimate them first, e.g. with cgal_rrht.open3d.estimate_normals(pcd)")
+    oriented = cgal_rrht.orient_normals(np.asarray(pcd.points), np.asarray(pcd.normals).reshape(-1, 3),
+                                        direction=direction, viewpoint=viewpoint, k=k, threads=threads)
+    pcd.normals = o3d.utility.Vector3dVector(oriented)
+    return pcd

@@ -12,7 +12,10 @@ points and writes them. The halo is checked, not assumed: where a point's
 support (the ball that holds every point its normal depends on) reaches beyond
 the loaded region, the point is estimated again with a halo wide enough. So
 every normal is, bit for bit, the one the whole cloud in memory gives, for any
-tiling and any number of workers.
+tiling and any number of workers. The normals can be oriented on the way,
+towards a direction or a viewpoint, which looks at one point at a time: the
+same, bit for bit, as ``orient_normals()`` on the whole cloud. A consistent
+orientation needs the whole cloud and is refused.
 
 The global id of a point is its row in the tiles taken in the order of their
 names, unless the tile ``NAME.EXT`` has a file ``NAME.ids.npy`` next to it
@@ -20,7 +23,7 @@ names, unless the tile ``NAME.EXT`` has a file ``NAME.ids.npy`` next to it
 
 Command line::
 
-    python -m cgal_rrht.tiles INPUT OUTPUT [--scheduler ADDRESS] [--tile-size S] [options]
+    python -m cgal_rrht.tiles INPUT OUTPUT [--scheduler ADDRESS] [--tile-size S] [--orient=up] [options]
     python -m cgal_rrht.tiles split INPUT FOLDER --tile-size S
 
 See ``python -m cgal_rrht.tiles --help``.
@@ -42,7 +45,7 @@ from typing import Any, Dict, List, Optional, Sequence, Tuple
 import numpy as np
 import numpy.typing as npt
 
-from . import AGGREGATIONS, SAMPLINGS, estimate_normals
+from . import AGGREGATIONS, SAMPLINGS, _estimation_orientation, estimate_normals
 from .point_files import PointFile, PointFileError, ply_header, write_points
 
 __all__ = ["run", "split", "list_tiles", "TileError", "PointFileError", "Tile"]
@@ -54,6 +57,15 @@ _CHUNK_ROWS = 1 << 20
 
 class TileError(ValueError):
     """A tile that cannot be used (missing, malformed, empty); the message names it."""
+
+
+_NO_CONSISTENT = (
+    "a consistent orientation cannot be made tile by tile: each tile sees only its part of the surface, so the "
+    "sign of each tile, and of each of its pieces, would be chosen on its own and neighboring tiles could disagree "
+    "(and a survey's open surface has no outside to point to). Orient towards a direction instead ('up' for aerial "
+    "LiDAR) or a viewpoint; with the scanner position of each point, orient each output tile with "
+    "cgal_rrht.orient_normals(points, normals, viewpoint=positions); a cloud that fits in memory can be oriented "
+    "consistently with cgal_rrht.orient_normals(points, normals)")
 
 
 @dataclass(frozen=True)
@@ -253,8 +265,9 @@ def list_tiles(folder: "os.PathLike[str] | str") -> List[Path]:
 def run(input: "os.PathLike[str] | str", output: "os.PathLike[str] | str", *, scheduler: Optional[str] = None,
         workers: Optional[int] = None, threads: int = 1, tile_size: Optional[float] = None,
         halo: Optional[float] = None, progress: bool = True, return_confidence: bool = False,
+        orient: Optional[Any] = None, viewpoint: Optional[Sequence[float]] = None,
         **estimator: Any) -> Dict[str, int]:
-    """Estimates the normals of a tiled cloud on Dask, tile by tile.
+    """Estimates the normals of a tiled cloud on Dask, tile by tile, and orients them if asked.
 
     Parameters
     ----------
@@ -292,6 +305,18 @@ def run(input: "os.PathLike[str] | str", output: "os.PathLike[str] | str", *, sc
         Show Dask's progress bar.
     return_confidence : bool, default False
         Also write each normal's confidence.
+    orient : "up" or sequence of 3 numbers, optional
+        Orient the normals towards this direction (``"up"``: (0, 0, 1), for
+        aerial LiDAR), as ``estimate_normals(orient=...)``; default: not
+        oriented. ``"consistent"`` is refused, before anything runs: a tile
+        sees only its part of the cloud, and the sign of each tile would be
+        chosen on its own (see the user manual, "From Python").
+    viewpoint : sequence of 3 numbers, optional
+        Orient the normals towards this point (a scanner's position), as
+        ``estimate_normals(viewpoint=...)``; not with ``orient``. The
+        position of the sensor of each point is not read from the tiles:
+        orient each output tile with ``cgal_rrht.orient_normals(points,
+        normals, viewpoint=positions)``, which gives the same result.
     **estimator
         The parameters of ``cgal_rrht.estimate_normals()`` (``k``,
         ``radius``, ``planes``, ``refit``, ``seed``...).
@@ -308,14 +333,27 @@ def run(input: "os.PathLike[str] | str", output: "os.PathLike[str] | str", *, sc
     TileError
         Before anything is written, for a missing, malformed or empty tile,
         naming it.
+    ValueError
+        Before anything runs, for ``orient="consistent"``, a ``viewpoint``
+        other than one point, and what ``estimate_normals()`` refuses in
+        ``orient`` and ``viewpoint``.
     """
     for name in ("ids", "return_support", "progress"):
         if name in estimator:
             raise TypeError(f"run() sets {name} itself")
+    if isinstance(orient, str) and orient == "consistent":
+        raise ValueError(_NO_CONSISTENT)
+    if viewpoint is not None and np.shape(viewpoint) != (3,):
+        raise ValueError(f"viewpoint must be one point, 3 numbers, not of shape {np.shape(viewpoint)}: to orient "
+                         "towards the sensor position of each point, orient each output tile with "
+                         "cgal_rrht.orient_normals(points, normals, viewpoint=positions)")
+    # The checks of estimate_normals(), made now rather than by each task.
+    _estimation_orientation(orient, viewpoint, 0, threads, with_neighbors=True)
     input, output = Path(input), Path(output)
     if not input.exists():
         raise TileError(f"{input}: no such file or folder")
-    options = dict(estimator, threads=threads, return_confidence=return_confidence)
+    options = dict(estimator, threads=threads, return_confidence=return_confidence, orient=orient,
+                   viewpoint=viewpoint)
     if input.is_dir():
         if output.exists() and output.resolve() == input.resolve():
             raise ValueError(f"{output}: the output folder must not be the folder of the tiles")
@@ -523,6 +561,11 @@ def _parser() -> argparse.ArgumentParser:
                         "(default: about a million points a tile)")
     parser.add_argument("--halo", type=float, help="first margin loaded around each tile (default: from the density)")
     parser.add_argument("--confidence", action="store_true", help="also write each normal's confidence")
+    parser.add_argument("--orient", nargs="?", const="consistent", type=_orientation_flag,
+                        metavar="up|X,Y,Z|viewpoint:X,Y,Z",
+                        help="orient the normals: --orient=up (aerial surveys), --orient=X,Y,Z towards a direction, "
+                        "--orient=viewpoint:X,Y,Z towards a scanner position (the values of rrht_normals --orient; "
+                        "its consistent orientation, --orient alone, cannot be made tile by tile and is refused)")
     parser.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
     estimator = parser.add_argument_group("the estimator (as rrht_normals and cgal_rrht.estimate_normals)")
     estimator.add_argument("-k", "--neighbors", type=int, default=100, help="K, the number of neighbors (default 100)")
@@ -541,6 +584,21 @@ def _parser() -> argparse.ArgumentParser:
     return parser
 
 
+def _orientation_flag(text: str) -> Tuple[str, Any]:
+    """The value of ``--orient`` as ("orient", value) or ("viewpoint", point), in the syntax of ``rrht_normals``."""
+    if text in ("consistent", "mst", "up"):
+        # Both consistent orientations of rrht_normals are refused by run(), with the reason.
+        return ("orient", "up" if text == "up" else "consistent")
+    keyword, numbers = ("viewpoint", text[len("viewpoint:"):]) if text.startswith("viewpoint:") else ("orient", text)
+    try:
+        values = tuple(float(number) for number in numbers.split(","))
+    except ValueError:
+        values = ()
+    if len(values) != 3:
+        raise argparse.ArgumentTypeError(f"must be up, X,Y,Z or viewpoint:X,Y,Z, not {text!r}")
+    return (keyword, values)
+
+
 def main(argv: Optional[Sequence[str]] = None) -> int:
     argv = list(sys.argv[1:] if argv is None else argv)
     try:
@@ -557,9 +615,10 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
             print(f"{len(written)} tiles in {args.folder}")
             return 0
         args = _parser().parse_args(argv)
+        orientation = dict([args.orient]) if args.orient else {}
         summary = run(args.input, args.output, scheduler=args.scheduler, workers=args.workers, threads=args.threads,
                       tile_size=args.tile_size, halo=args.halo, progress=not args.quiet,
-                      return_confidence=args.confidence, k=args.neighbors, radius=args.radius, planes=args.planes,
+                      return_confidence=args.confidence, **orientation, k=args.neighbors, radius=args.radius, planes=args.planes,
                       rotations=args.rotations, slices=args.slices, sampling=args.sampling,
                       presampling=args.presampling, aggregation=args.aggregation, cluster_angle=args.cluster_angle,
                       confidence_interval=not args.no_confidence_interval, adaptive=args.adaptive,

@@ -1,12 +1,14 @@
 // Copyright (c) 2026 The CGAL RRHT authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// cgal_rrht._core: CGAL::rrht_estimate_normals() on NumPy arrays. The
-// documented Python API is cgal_rrht.estimate_normals() (cgal_rrht/__init__.py),
-// which checks the array and calls estimate_normals() below.
+// cgal_rrht._core: CGAL::rrht_estimate_normals() and CGAL::rrht_orient_normals()
+// on NumPy arrays. The documented Python API is cgal_rrht.estimate_normals() and
+// cgal_rrht.orient_normals() (cgal_rrht/__init__.py), which check the arrays and
+// call the functions below.
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/rrht_estimate_normals.h>
+#include <CGAL/rrht_orient_normals.h>
 
 #include <pybind11/functional.h>
 #include <pybind11/numpy.h>
@@ -19,6 +21,7 @@
 
 #include <tbb/task_arena.h>
 
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -29,10 +32,12 @@
 #include <limits>
 #include <map>
 #include <mutex>
+#include <numeric>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <vector>
 
 namespace py = pybind11;
 
@@ -73,15 +78,21 @@ struct Row_neighbor_only_map
   friend bool get(const Row_neighbor_only_map& map, std::size_t i) { return i >= map.size; }
 };
 
-/// Row i of a C-contiguous (N, 3) array of doubles, written as a normal.
+/// Row i of a C-contiguous (N, 3) array of doubles, read and written as a
+/// normal (the estimation only writes it, the orientation reads and flips it).
 struct Row_normal_map
 {
   typedef std::size_t key_type;
   typedef Kernel::Vector_3 value_type;
   typedef value_type reference;
-  typedef boost::writable_property_map_tag category;
+  typedef boost::read_write_property_map_tag category;
   double* data;
 
+  friend value_type get(const Row_normal_map& map, std::size_t i)
+  {
+    const double* row = map.data + 3 * i;
+    return value_type(row[0], row[1], row[2]);
+  }
   friend void put(const Row_normal_map& map, std::size_t i, const value_type& n)
   {
     double* row = map.data + 3 * i;
@@ -142,6 +153,23 @@ Count count(long long value, const char* what)
     throw py::value_error(std::string(what) + " must be from 0 to " + std::to_string(std::numeric_limits<Count>::max()) +
                           ", got " + std::to_string(value));
   return static_cast<Count>(value);
+}
+
+/// The threads of a call (`threads` of the Python functions): 0, TBB's
+/// default (all cores), or 1 to 1024, the bound of rrht_normals --threads.
+int thread_count(const std::optional<long long>& threads)
+{
+  if(threads && (*threads < 1 || *threads > 1024))
+    throw py::value_error("threads must be from 1 to 1024, got " + std::to_string(*threads));
+  return threads ? int(*threads) : 0;
+}
+
+/// Whether `array` has the shape (rows, 3): a guard for the memory read, the
+/// Python side having checked the user's arrays with the user's names.
+void check_rows(const py::array_t<double, py::array::c_style>& array, std::size_t rows, const char* what)
+{
+  if(array.ndim() != 2 || array.shape(1) != 3 || static_cast<std::size_t>(array.shape(0)) != rows)
+    throw py::value_error(std::string(what) + " must have the shape (" + std::to_string(rows) + ", 3)");
 }
 
 struct Options
@@ -277,11 +305,57 @@ py::tuple estimate_normals(const py::array_t<double, py::array::c_style>& points
                         with_support ? py::object(support) : py::none());
 }
 
+/// Orients `normals` (N, 3) in place: towards `direction`, towards
+/// `viewpoint`, towards the row of `viewpoints` of each point, or, with none
+/// of them, consistently with `k` neighbors. The range oriented is a vector of
+/// row indices, which CGAL::rrht_orient_normals() partitions, while the maps
+/// read and write the arrays by row: the arrays keep their order. Rows that
+/// cannot be oriented are left as they are.
+void orient_normals(const py::array_t<double, py::array::c_style>& points,
+                    py::array_t<double, py::array::c_style>& normals,
+                    const std::optional<std::array<double, 3>>& direction,
+                    const std::optional<std::array<double, 3>>& viewpoint,
+                    const std::optional<py::array_t<double, py::array::c_style>>& viewpoints, long long k,
+                    const std::optional<long long>& threads)
+{
+  if(points.ndim() != 2 || points.shape(1) != 3)
+    throw py::value_error("points must have the shape (N, 3)");
+  const std::size_t size = static_cast<std::size_t>(points.shape(0));
+  check_rows(normals, size, "normals");
+  if(viewpoints)
+    check_rows(*viewpoints, size, "viewpoints");
+  if(int(direction.has_value()) + int(viewpoint.has_value()) + int(viewpoints.has_value()) > 1)
+    throw py::value_error("give direction or viewpoint, not both");
+  const unsigned int neighbors = count<unsigned int>(k, "k");
+  const int thread_limit = thread_count(threads);
+  std::vector<std::size_t> rows(size);
+  std::iota(rows.begin(), rows.end(), std::size_t(0));
+  const auto np = CGAL::RRHT::parameters::point_map(Row_point_map{points.data(), size, nullptr})
+                    .normal_map(Row_normal_map{normals.mutable_data()});
+  // No callback to stop it: with the GIL released, a Ctrl-C is raised when it returns.
+  py::gil_scoped_release no_gil;
+  tbb::task_arena arena(thread_limit > 0 ? thread_limit : tbb::task_arena::automatic);
+  arena.execute([&]() {
+    if(direction)
+      CGAL::rrht_orient_normals<CGAL::Parallel_tag>(
+        rows, neighbors, np.direction(Kernel::Vector_3((*direction)[0], (*direction)[1], (*direction)[2])));
+    else if(viewpoint)
+      CGAL::rrht_orient_normals<CGAL::Parallel_tag>(
+        rows, neighbors, np.viewpoint(Kernel::Point_3((*viewpoint)[0], (*viewpoint)[1], (*viewpoint)[2])));
+    else if(viewpoints)
+      CGAL::rrht_orient_normals<CGAL::Parallel_tag>(rows, neighbors,
+                                                    np.viewpoint_map(Row_point_map{viewpoints->data(), size, nullptr}));
+    else
+      CGAL::rrht_orient_normals<CGAL::Parallel_tag>(rows, neighbors, np);
+  });
+}
+
 } // namespace
 
 PYBIND11_MODULE(_core, m)
 {
-  m.doc() = "CGAL::rrht_estimate_normals() on NumPy arrays; use cgal_rrht.estimate_normals().";
+  m.doc() = "CGAL::rrht_estimate_normals() and CGAL::rrht_orient_normals() on NumPy arrays; use "
+            "cgal_rrht.estimate_normals() and cgal_rrht.orient_normals().";
   m.def(
     "estimate_normals",
     [](const py::array_t<double, py::array::c_style>& points,
@@ -314,9 +388,7 @@ PYBIND11_MODULE(_core, m)
       options.seed = count<unsigned int>(seed, "seed");
       options.adaptive = adaptive;
       options.refit = refit;
-      if(threads && (*threads < 1 || *threads > 1024)) // the bound of rrht_normals --threads
-        throw py::value_error("threads must be from 1 to 1024, got " + std::to_string(*threads));
-      options.threads = threads ? int(*threads) : 0;
+      options.threads = thread_count(threads);
       return estimate_normals(points, neighbors, ids, options, return_confidence, return_support, progress);
     },
     py::arg("points").noconvert(), py::arg("neighbors").noconvert().none(true), py::arg("ids").noconvert().none(true),
@@ -330,4 +402,11 @@ PYBIND11_MODULE(_core, m)
     "`ids` None or a C-contiguous uint64 array (N + M,); `progress`, if not None, is called with the advancement (0 to 1). Returns the normals\n"
     "(N, 3), their confidences (N,) if `return_confidence` (else None) and their support radii (N,) if\n"
     "`return_support` (else None).");
+  m.def("orient_normals", &orient_normals, py::arg("points").noconvert(), py::arg("normals").noconvert(),
+        py::arg("direction").none(true), py::arg("viewpoint").none(true), py::arg("viewpoints").noconvert().none(true),
+        py::arg("k"), py::arg("threads").none(true),
+        "The orientation behind cgal_rrht.orient_normals(), whose documentation says what each argument is.\n"
+        "`points` and `normals` are C-contiguous float64 arrays (N, 3); `normals` is oriented in place, row by row.\n"
+        "At most one of `direction` (3 numbers), `viewpoint` (3 numbers) and `viewpoints` (a C-contiguous\n"
+        "float64 array (N, 3)) is given; with none, the orientation is consistent, with `k` neighbors.");
 }

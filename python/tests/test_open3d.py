@@ -1,13 +1,13 @@
 # Copyright (c) 2026 The CGAL RRHT authors.
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""cgal_rrht.open3d.estimate_normals() on an Open3D point cloud."""
+"""cgal_rrht.open3d.estimate_normals() and orient_normals() on an Open3D point cloud."""
 
 import numpy as np
 import pytest
 
 import cgal_rrht
 import cgal_rrht.open3d
-from conftest import angle_errors_deg
+from conftest import angle_errors_deg, noisy_cube
 
 o3d = pytest.importorskip("open3d")
 
@@ -52,3 +52,60 @@ def test_empty_point_cloud_and_bad_arguments():
         cgal_rrht.open3d.estimate_normals(np.zeros((10, 3)))
     with pytest.raises(ValueError, match="unknown sampling"):
         cgal_rrht.open3d.estimate_normals(o3d.geometry.PointCloud(), sampling="grid")
+
+
+def test_orient_consistent_in_place_of_orient_normals_consistent_tangent_plane():
+    """estimate_normals(pcd, orient="consistent"): the normals of cgal_rrht.estimate_normals, out of a noisy cube."""
+    points, truth = noisy_cube(20000)
+    truth *= np.sign(np.sum(truth * (points - 0.5), axis=1))[:, None]  # outward
+    fast = dict(k=60, planes=300, rotations=2)
+    pcd = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(points))
+    assert cgal_rrht.open3d.estimate_normals(pcd, orient="consistent", **fast) is pcd
+    normals = np.asarray(pcd.normals)
+    assert np.array_equal(normals, cgal_rrht.estimate_normals(points, orient="consistent", **fast))
+    ours = np.mean(np.sum(normals * truth, axis=1) > 0)
+    theirs = o3d.geometry.PointCloud(pcd)
+    theirs.orient_normals_consistent_tangent_plane(18)
+    share = np.mean(np.sum(np.asarray(theirs.normals) * truth, axis=1) > 0)
+    print(f"outward: cgal_rrht {ours:.2%}, Open3D's orient_normals_consistent_tangent_plane(18) {share:.2%} "
+          "(its sign chosen by chance)")
+    assert ours >= 0.99
+
+
+def test_orient_normals_of_a_point_cloud(fandisk):
+    """In place of Open3D's three orientations: the same signs towards a direction and a camera."""
+    points, truth = fandisk
+    unoriented = cgal_rrht.estimate_normals(points, k=30)
+    pcd = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(points))
+    pcd.normals = o3d.utility.Vector3dVector(unoriented)
+    assert cgal_rrht.open3d.orient_normals(pcd) is pcd
+    assert np.array_equal(np.asarray(pcd.normals), cgal_rrht.orient_normals(points, unoriented))
+    assert np.array_equal(np.asarray(cgal_rrht.open3d.orient_normals(pcd, k=8).normals),
+                          cgal_rrht.orient_normals(points, unoriented, k=8))
+    for ours, theirs in [
+        (dict(direction=(0.3, -1.0, 2.0)), lambda cloud: cloud.orient_normals_to_align_with_direction([0.3, -1.0, 2.0])),
+        (dict(direction="up"), lambda cloud: cloud.orient_normals_to_align_with_direction([0.0, 0.0, 1.0])),
+        (dict(viewpoint=(0.1, 0.2, 3.0)), lambda cloud: cloud.orient_normals_towards_camera_location([0.1, 0.2, 3.0])),
+    ]:
+        pcd.normals = o3d.utility.Vector3dVector(unoriented)
+        cgal_rrht.open3d.orient_normals(pcd, **ours)
+        reference = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(points))
+        reference.normals = o3d.utility.Vector3dVector(unoriented)
+        theirs(reference)
+        assert np.array_equal(np.asarray(pcd.normals), np.asarray(reference.normals)), ours
+    assert np.array_equal(np.asarray(pcd.points), points)
+
+
+def test_orient_normals_bad_point_clouds():
+    empty = o3d.geometry.PointCloud()
+    assert len(cgal_rrht.open3d.orient_normals(empty).normals) == 0
+    with pytest.raises(ValueError, match="pcd has no normals: estimate them first"):
+        cgal_rrht.open3d.orient_normals(o3d.geometry.PointCloud(o3d.utility.Vector3dVector(np.zeros((5, 3)))))
+    with pytest.raises(TypeError, match="open3d.geometry.PointCloud"):
+        cgal_rrht.open3d.orient_normals(np.zeros((10, 3)))
+    pcd = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(np.eye(3)))
+    pcd.normals = o3d.utility.Vector3dVector(np.eye(3))
+    with pytest.raises(ValueError, match="give direction or viewpoint, not both"):
+        cgal_rrht.open3d.orient_normals(pcd, direction="up", viewpoint=(0, 0, 1))
+    with pytest.raises(ValueError, match="give orient or viewpoint, not both"):
+        cgal_rrht.open3d.estimate_normals(pcd, orient="up", viewpoint=(0, 0, 1))

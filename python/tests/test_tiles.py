@@ -112,6 +112,76 @@ def test_tiles_written_by_rrht_normals(cluster, tmp_path):
     assert np.array_equal(np.column_stack([out["nx"], out["ny"], out["nz"]]), cgal_rrht.estimate_normals(points, k=30))
 
 
+def test_tiles_oriented_up_as_the_whole_cloud(tiled, cluster):
+    """orient="up": each normal is oriented on its own, so the tiles give what the whole cloud gives."""
+    folder, points, expected = tiled
+    tiles.run(folder / "tiles", folder / "up", scheduler=cluster.scheduler_address, progress=False, orient="up",
+              **OPTIONS)
+    normals = read_normals(folder / "up", len(points))
+    assert (normals[:, 2] >= 0).all()
+    oriented = cgal_rrht.orient_normals(points, expected, direction="up")
+    assert not np.array_equal(oriented, expected)
+    assert np.array_equal(normals, oriented), f"{(normals != oriented).any(axis=1).sum()} normals differ"
+
+
+def test_tiles_oriented_towards_a_direction_with_confidence(cluster, tmp_path):
+    points = parts_side_by_side(60_000, seed=5)
+    direction = (1.0, 0.5, -0.2)
+    expected, confidence = cgal_rrht.estimate_normals(points, return_confidence=True, **OPTIONS)
+    np.save(tmp_path / "cloud.npy", points)
+    tiles.run(tmp_path / "cloud.npy", tmp_path / "out.npy", scheduler=cluster.scheduler_address, tile_size=2.0,
+              progress=False, return_confidence=True, orient=direction, **OPTIONS)
+    out = np.load(tmp_path / "out.npy")
+    assert np.array_equal(out[:, 3:6], cgal_rrht.orient_normals(points, expected, direction=direction))
+    assert np.array_equal(out[:, 6], confidence)
+
+
+@pytest.mark.parametrize(
+    "arguments, message",
+    [
+        (dict(orient="consistent"), "a consistent orientation cannot be made tile by tile: each tile sees only its part"),
+        (dict(viewpoint=np.zeros((1000, 3))), r"viewpoint must be one point, 3 numbers, not of shape \(1000, 3\): "
+                                              r"to orient towards the sensor position of each point"),
+        (dict(orient=(0, 0, 0)), "direction must be finite and not null"),
+        (dict(viewpoint=(0, np.nan, 0)), "viewpoint must be finite"),
+        (dict(orient="up", viewpoint=(0, 0, 1)), "give orient or viewpoint, not both"),
+        (dict(orient="sideways"), "unknown orient 'sideways'"),
+    ],
+)
+def test_orientations_refused_up_front(tmp_path, arguments, message):
+    """Before any scheduler is reached (there is none at this address) and anything is written."""
+    np.save(tmp_path / "cloud.npy", parts_side_by_side(1000))
+    with pytest.raises(ValueError, match=message):
+        tiles.run(tmp_path / "cloud.npy", tmp_path / "out.npy", scheduler="tcp://127.0.0.1:9", progress=False,
+                  **arguments, **OPTIONS)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["cloud.npy"]
+
+
+def test_command_line_orientation(cli_env, tmp_path):
+    points = parts_side_by_side(20_000, seed=6)
+    np.save(tmp_path / "cloud.npy", points)
+    command = [sys.executable, "-m", "cgal_rrht.tiles", str(tmp_path / "cloud.npy")]
+    estimator = ["-k", "30", "--planes", "300", "--rotations", "2"]
+    done = subprocess.run(command + [str(tmp_path / "out.npy"), "--workers", "2", "-q", "--tile-size", "2",
+                                     *estimator, "--orient=viewpoint:4,4,3"],
+                          capture_output=True, text=True, env=cli_env)
+    assert done.returncode == 0, done.stderr
+    expected = cgal_rrht.estimate_normals(points, k=30, planes=300, rotations=2, viewpoint=(4.0, 4.0, 3.0))
+    assert np.array_equal(np.load(tmp_path / "out.npy")[:, 3:6], expected)
+    for flag, message in [
+        ("--orient", "error: a consistent orientation cannot be made tile by tile"),
+        ("--orient=mst", "error: a consistent orientation cannot be made tile by tile"),
+        ("--orient=0,0,0", "direction must be finite and not null"),
+        ("--orient=sideways", "argument --orient: must be up, X,Y,Z or viewpoint:X,Y,Z, not 'sideways'"),
+        ("--orient=viewpoint:1,2", "argument --orient: must be up, X,Y,Z or viewpoint:X,Y,Z, not 'viewpoint:1,2'"),
+    ]:
+        done = subprocess.run(command + [str(tmp_path / "bad.npy"), "-q", "--scheduler", "tcp://127.0.0.1:9", flag],
+                              capture_output=True, text=True, env=cli_env)
+        assert done.returncode == 2, (flag, done.stderr)
+        assert message in done.stderr, (flag, done.stderr)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["cloud.npy", "out.npy"]
+
+
 def test_a_worker_killed_mid_run_changes_nothing(tiled, cluster):
     folder, points, expected = tiled
     output = folder / "killed"
