@@ -9,7 +9,9 @@
    normal of the face each lies on, kept as the truth);
 2. estimates the normals with cgal_rrht, and, for comparison, with Open3D's
    own estimate_normals (30 nearest neighbors, its usual setting);
-3. orients RRHT's normals with Open3D's orient_normals_consistent_tangent_plane;
+3. orients RRHT's normals consistently with cgal_rrht.open3d.orient_normals
+   (in place of Open3D's orient_normals_consistent_tangent_plane, whose
+   propagation flips faces across the sharp edges that RRHT keeps);
 4. reconstructs a surface with Open3D's Poisson reconstruction and writes it
    to FOLDER/fandisk_poisson.ply;
 5. writes FOLDER/fandisk_normal_errors.png: the angle error of each point,
@@ -84,7 +86,7 @@ def main():
               f"RMS {np.sqrt(np.mean(errors**2)):.1f} degrees")
     print(f"wrote {picture}")
 
-    cloud.orient_normals_consistent_tangent_plane(10)
+    cgal_rrht.open3d.orient_normals(cloud)
     mesh, _ = o3d.geometry.TriangleMesh.create_from_point_cloud_poisson(cloud, depth=8)
     path = output / "fandisk_poisson.ply"
     if not o3d.io.write_triangle_mesh(str(path), mesh):
