@@ -11,10 +11,13 @@
 
 #include <CGAL/RRHT/internal/orientation_edges.h>
 
+#include <CGAL/for_each.h>
+
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <numeric>
 #include <queue>
 #include <unordered_map>
 #include <utility>
@@ -34,13 +37,24 @@ namespace internal {
 /// not by its single strongest edge as in a spanning tree, so that a few
 /// wrong edges (noise at a sharp edge, an outlier) are outvoted. Clusters
 /// with no evidence between them (no edge, or weights summing to 0) stay
-/// apart. Ties are broken by the vertices' numbers: the result depends only
-/// on the edges and their order.
+/// apart, and so do two clusters of at least `large` points each whose sum
+/// is under a hundredth of the smaller one's points: two surfaces that a few
+/// neighbors reach across (the walls of a cavity and the outside, close
+/// objects), which the signs out of the solid (`outward_signs()`) orient
+/// better one by one than a few edges together. Each vertex stands for
+/// `points[v]` points (1 each if `points` is empty). Ties are broken by the
+/// vertices' numbers: the result depends only on the edges and their order.
 class Signed_agglomeration
 {
 public:
-  Signed_agglomeration(std::size_t size, const std::vector<Signed_edge>& edges)
+  Signed_agglomeration(std::size_t size, const std::vector<Signed_edge>& edges,
+                       const std::vector<std::size_t>& points = std::vector<std::size_t>(),
+                       std::size_t large = std::size_t(-1))
   {
+    // The number of points of each cluster.
+    std::vector<std::size_t> weight(points);
+    if(weight.empty())
+      weight.assign(size, 1);
     // A forest of the joins: each cluster's parent and its sign relative to
     // the parent.
     std::vector<std::uint32_t> parent(size);
@@ -70,12 +84,18 @@ public:
       const auto between = adjacency[best.a].find(best.b);
       if(between == adjacency[best.a].end() || between->second != best.sum)
         continue;
+      // Two large clusters on too little evidence for their size stay apart
+      // (it may grow with later joins, and be pushed again then).
+      if(weight[best.a] >= large && weight[best.b] >= large &&
+         std::abs(best.sum) < min_share * double((std::min)(weight[best.a], weight[best.b])))
+        continue;
       // The cluster with fewer neighbors joins the other.
       std::uint32_t kept = best.a, joined = best.b;
       if(adjacency[joined].size() > adjacency[kept].size())
         std::swap(kept, joined);
       const double flip = best.sum < 0 ? -1. : 1.;
       parent[joined] = kept;
+      weight[kept] += weight[joined];
       sign_to_parent[joined] = static_cast<signed char>(flip);
       adjacency[kept].erase(joined);
       for(const auto& neighbor : adjacency[joined])
@@ -117,6 +137,8 @@ public:
 private:
   typedef std::unordered_map<std::uint32_t, double> Adjacency; // neighbor cluster: sum of signed weights
 
+  static constexpr double min_share = 0.01;
+
   struct Candidate
   {
     double sum;
@@ -134,6 +156,78 @@ private:
   std::vector<std::uint32_t> m_root_of;
   std::vector<signed char> m_sign_in_cluster;
 };
+
+/// Each vertex's cluster and sign in it, as `Signed_agglomeration` gives
+/// them.
+struct Signed_clusters
+{
+  std::vector<std::uint32_t> cluster;
+  std::vector<signed char> sign;
+};
+
+/// `Signed_agglomeration` of a graph of `size` vertices, the edges between
+/// vertices of the same block of `block` consecutive numbers first, each
+/// block on its own (in parallel, and in a heap that stays in the cache),
+/// then the clusters of all the blocks, joined by the sums of all the edges
+/// between them. Where the vertices are numbered along a space-filling
+/// curve, a block is a compact part of the surface: within it, the joins
+/// are those of the agglomeration of the whole graph, unless evidence from
+/// outside the block would have come first. The result does not depend on
+/// the number of threads. Clusters of 100 points and a thousandth of the
+/// graph are large.
+template <typename ConcurrencyTag>
+Signed_clusters signed_clusters(std::size_t size, const std::vector<Signed_edge>& edges, std::size_t block)
+{
+  const std::size_t large = (std::max<std::size_t>)(100, size / 1000);
+  const std::size_t blocks = (size + block - 1) / block;
+  std::vector<std::vector<Signed_edge> > within(blocks);
+  for(const Signed_edge& e : edges)
+    if(e.a / block == e.b / block)
+    {
+      const std::uint32_t first = std::uint32_t(e.a / block * block);
+      within[e.a / block].push_back({ e.a - first, e.b - first, e.weight });
+    }
+  Signed_clusters result;
+  result.cluster.resize(size);
+  result.sign.resize(size);
+  std::vector<std::size_t> block_numbers(blocks);
+  std::iota(block_numbers.begin(), block_numbers.end(), std::size_t(0));
+  CGAL::for_each<ConcurrencyTag>(block_numbers, [&](std::size_t b) {
+    const std::size_t first = b * block, count = (std::min)(size, first + block) - first;
+    const Signed_agglomeration local(count, within[b], std::vector<std::size_t>(), large);
+    for(std::size_t v = 0; v < count; ++v)
+    {
+      result.cluster[first + v] = std::uint32_t(first + local.cluster(v));
+      result.sign[first + v] = static_cast<signed char>(local.sign(v));
+    }
+    return true;
+  });
+  // The clusters of the blocks, numbered from 0, and all the edges between
+  // them, those within a block that it left apart included.
+  std::vector<std::uint32_t> number(size, std::uint32_t(-1));
+  std::uint32_t count = 0;
+  for(std::size_t v = 0; v < size; ++v)
+    if(number[result.cluster[v]] == std::uint32_t(-1))
+      number[result.cluster[v]] = count++;
+  std::vector<Signed_edge> across;
+  for(const Signed_edge& e : edges)
+  {
+    const std::uint32_t a = number[result.cluster[e.a]], b = number[result.cluster[e.b]];
+    if(a != b)
+      across.push_back({ (std::min)(a, b), (std::max)(a, b), e.weight * result.sign[e.a] * result.sign[e.b] });
+  }
+  std::vector<std::size_t> points(count, 0);
+  for(std::size_t v = 0; v < size; ++v)
+    ++points[number[result.cluster[v]]];
+  const Signed_agglomeration global(count, across, points, large);
+  for(std::size_t v = 0; v < size; ++v)
+  {
+    const std::uint32_t c = number[result.cluster[v]];
+    result.sign[v] = static_cast<signed char>(result.sign[v] * global.sign(c));
+    result.cluster[v] = global.cluster(c);
+  }
+  return result;
+}
 
 } // namespace internal
 } // namespace RRHT

@@ -24,7 +24,7 @@ namespace internal {
 /// The sign, +1 or -1, by which each unit normal of `normals` (in the order
 /// of `search`) is to be multiplied: the signed edges of the graph of the
 /// `k` nearest neighbors (`orientation_edges()`) join the points into
-/// consistently oriented clusters (`Signed_agglomeration`), and each
+/// consistently oriented clusters (`signed_clusters()`), and each
 /// cluster is turned out of the solid (`outward_signs()`).
 template <typename ConcurrencyTag>
 std::vector<int> consistent_orientation(const Neighbor_search& search, const std::vector<Eigen::Vector3d>& normals,
@@ -34,14 +34,18 @@ std::vector<int> consistent_orientation(const Neighbor_search& search, const std
   if(size < 2)
     return std::vector<int>(size, 1);
   std::vector<double> areas;
-  const Signed_agglomeration clusters(size, orientation_edges<ConcurrencyTag>(search, normals, k, areas));
+  // Blocks of 8192 points along the search's Hilbert order: large enough
+  // that the clusters are nearly those of one agglomeration of the whole
+  // graph, small enough that each block's heap stays in the cache.
+  const Signed_clusters clusters =
+    signed_clusters<ConcurrencyTag>(size, orientation_edges<ConcurrencyTag>(search, normals, k, areas), 8192);
   std::vector<std::uint32_t> cluster(size);
   std::vector<int> signs(size);
   std::vector<Eigen::Vector3d> points(size);
   for(std::size_t v = 0; v < size; ++v)
   {
-    cluster[v] = clusters.cluster(v);
-    signs[v] = clusters.sign(v);
+    cluster[v] = clusters.cluster[v];
+    signs[v] = clusters.sign[v];
     points[v] = search.point(v);
   }
   const std::vector<std::vector<std::uint32_t> > members = clusters_of(cluster);

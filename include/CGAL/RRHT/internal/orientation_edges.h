@@ -13,6 +13,7 @@
 #include <CGAL/RRHT/internal/Sheets.h>
 #include <CGAL/RRHT/internal/for_each_block.h>
 
+#include <CGAL/for_each.h>
 #include <CGAL/number_type_config.h>
 
 #include <Eigen/Core>
@@ -22,6 +23,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <numeric>
 #include <vector>
 
 namespace CGAL {
@@ -161,19 +163,21 @@ std::vector<Signed_edge> orientation_edges(const Neighbor_search& search, const 
   // Each pair once: a mutual pair by its first point, else by the point
   // whose neighbor the other is. The weight does not depend on which.
   std::vector<std::vector<Signed_edge> > blocks((size + 4095) / 4096);
-  for_each_block<ConcurrencyTag>(blocks.size(), no_progress, [] { return 0; }, [&](std::size_t begin, std::size_t end, int) {
-    for(std::size_t block = begin; block < end; ++block)
-      for(std::size_t i = block * 4096; i < (std::min)(size, (block + 1) * 4096); ++i)
-        for(std::size_t t = 0; t < k; ++t)
-        {
-          const std::uint32_t j = neighbors[i * k + t];
-          const auto first = neighbors.begin() + std::ptrdiff_t(j) * k;
-          if(j < i && std::find(first, first + k, std::uint32_t(i)) != first + k)
-            continue;
-          const Eigen::Vector3d d = search.point(j) - search.point(i);
-          blocks[block].push_back({ std::uint32_t((std::min<std::size_t>)(i, j)), std::uint32_t((std::max<std::size_t>)(i, j)),
-                                    signed_weight(d, normals[i], normals[j], scales[i], scales[j], sheets[i], sheets[j]) });
-        }
+  std::vector<std::size_t> block_numbers(blocks.size());
+  std::iota(block_numbers.begin(), block_numbers.end(), std::size_t(0));
+  CGAL::for_each<ConcurrencyTag>(block_numbers, [&](std::size_t block) {
+    for(std::size_t i = block * 4096; i < (std::min)(size, (block + 1) * 4096); ++i)
+      for(std::size_t t = 0; t < k; ++t)
+      {
+        const std::uint32_t j = neighbors[i * k + t];
+        const auto first = neighbors.begin() + std::ptrdiff_t(j) * k;
+        if(j < i && std::find(first, first + k, std::uint32_t(i)) != first + k)
+          continue;
+        const Eigen::Vector3d d = search.point(j) - search.point(i);
+        blocks[block].push_back({ std::uint32_t((std::min<std::size_t>)(i, j)), std::uint32_t((std::max<std::size_t>)(i, j)),
+                                  signed_weight(d, normals[i], normals[j], scales[i], scales[j], sheets[i], sheets[j]) });
+      }
+    return true;
   });
   std::vector<Signed_edge> edges;
   for(const std::vector<Signed_edge>& block : blocks)
