@@ -2,6 +2,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """Shared clouds with exact normals, and the command-line tool to compare with."""
 
+import inspect
 import os
 from pathlib import Path
 
@@ -18,6 +19,22 @@ def angle_errors_deg(normals, truth):
         np.linalg.norm(normals, axis=1) * np.linalg.norm(truth, axis=1), 1e-300
     )
     return np.degrees(np.arccos(np.clip(cosines, 0.0, 1.0)))
+
+
+def assert_documented(function, positional):
+    """Every parameter of ``function`` has its numpydoc entry with its default
+    (quoted either way), the first are ``positional`` and the others keyword-only."""
+    doc = function.__doc__
+    signature = inspect.signature(function)
+    for name, parameter in signature.parameters.items():
+        assert f"\n    {name} : " in doc, name
+        if parameter.default is not inspect.Parameter.empty and parameter.default is not None:
+            default = f"default {parameter.default!r}"
+            assert default in doc or default.replace("'", '"') in doc, name
+    parameters = list(signature.parameters.values())
+    assert [p.name for p in parameters[:len(positional)]] == list(positional)
+    assert all(p.kind is inspect.Parameter.KEYWORD_ONLY for p in parameters[len(positional):])
+    return doc
 
 
 def noisy_cube(n, noise=0.002, seed=1):

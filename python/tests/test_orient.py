@@ -4,14 +4,13 @@
 outward on closed shapes, towards directions and viewpoints, the same normals
 as rrht_normals --orient and for any number of threads, bad input."""
 
-import inspect
 import subprocess
 
 import numpy as np
 import pytest
 
 import cgal_rrht
-from conftest import DATA, angle_errors_deg, noisy_cube
+from conftest import DATA, angle_errors_deg, assert_documented, noisy_cube
 
 # The fast setting: the orientation, not the estimation, is under test.
 FAST = dict(k=60, planes=300, rotations=2)
@@ -362,13 +361,4 @@ def test_bad_orientation_of_estimate_normals(arguments, message):
 
 
 def test_documentation():
-    doc = cgal_rrht.orient_normals.__doc__
-    signature = inspect.signature(cgal_rrht.orient_normals)
-    for name, parameter in signature.parameters.items():
-        assert f"\n    {name} : " in doc, name
-        if parameter.default is not inspect.Parameter.empty and parameter.default is not None:
-            assert f"default {parameter.default!r}" in doc, name
-    assert list(signature.parameters)[:2] == ["points", "normals"]
-    assert all(p.kind is inspect.Parameter.KEYWORD_ONLY for p in list(signature.parameters.values())[2:])
-    for name in ("orient", "viewpoint"):
-        assert f"\n    {name} : " in cgal_rrht.estimate_normals.__doc__
+    assert_documented(cgal_rrht.orient_normals, ["points", "normals"])
