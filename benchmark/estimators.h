@@ -4,7 +4,8 @@
 // The normal estimators the benchmark compares, each behind the same
 // `Estimate` signature: RRHT (this package), CGAL's jet fitting, PCA and
 // VCM, and PCL's NormalEstimationOMP and Open3D's EstimateNormals when they
-// were found at configure time.
+// were found at configure time; and the orientations of the normals, each
+// an `Orient`: RRHT's, CGAL's mst_orient_normals and Open3D's.
 
 #ifndef CGAL_RRHT_BENCHMARK_ESTIMATORS_H
 #define CGAL_RRHT_BENCHMARK_ESTIMATORS_H
@@ -12,12 +13,14 @@
 #include "measure.h"
 
 #include <CGAL/rrht_estimate_normals.h>
+#include <CGAL/rrht_orient_normals.h>
 // The components measured on their own by `neighbor_queries()`.
 #include <CGAL/RRHT/internal/Neighbor_search.h>
 #include <CGAL/RRHT/internal/for_each_block.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/compute_average_spacing.h>
 #include <CGAL/jet_estimate_normals.h>
+#include <CGAL/mst_orient_normals.h>
 #include <CGAL/pca_estimate_normals.h>
 #include <CGAL/vcm_estimate_normals.h>
 
@@ -267,6 +270,58 @@ inline Estimator vcm(const Neighborhood& n)
   return e;
 }
 
+/// An orientation of the normals a cloud already has, in place: returns how
+/// many samples it oriented, which it moved to the front (the others follow,
+/// as `CGAL::mst_orient_normals()` and `CGAL::rrht_orient_normals()` leave
+/// them).
+typedef std::function<std::size_t(Cloud&, unsigned int threads)> Orient;
+
+struct Orientation
+{
+  std::string name;
+  Orient orient;
+  bool parallel = true;
+
+  /// As an `Estimator`, to be timed by `measure()` on a cloud with normals.
+  Estimator timed() const
+  {
+    Estimator e;
+    e.name = name;
+    e.parallel = parallel;
+    const Orient o = orient;
+    e.estimate = [o](Cloud& cloud, unsigned int threads) { o(cloud, threads); };
+    return e;
+  }
+};
+
+/// CGAL::rrht_orient_normals(), consistently (no direction nor viewpoint):
+/// "rrht_orient_K18".
+inline Orientation rrht_orient(unsigned int k)
+{
+  Orientation o;
+  o.name = "rrht_orient_K" + std::to_string(k);
+  o.orient = [k](Cloud& cloud, unsigned int) {
+    const auto end = CGAL::rrht_orient_normals<CGAL::Parallel_if_available_tag>(
+      cloud, k, CGAL::RRHT::parameters::point_map(Point_of_sample()).normal_map(Normal_of_sample()));
+    return std::size_t(end - cloud.begin());
+  };
+  return o;
+}
+
+/// CGAL::mst_orient_normals() (Hoppe et al. 1992; sequential): "mst_orient_K18".
+inline Orientation mst_orient(unsigned int k)
+{
+  Orientation o;
+  o.name = "mst_orient_K" + std::to_string(k);
+  o.parallel = false;
+  o.orient = [k](Cloud& cloud, unsigned int) {
+    const auto end = CGAL::mst_orient_normals(
+      cloud, k, CGAL::parameters::point_map(Point_of_sample()).normal_map(Normal_of_sample()));
+    return std::size_t(end - cloud.begin());
+  };
+  return o;
+}
+
 #ifdef RRHT_BENCHMARK_WITH_PCL
 /// pcl::NormalEstimationOMP with the k nearest neighbors (pcl_peer.cpp).
 void pcl_estimate_normals(Cloud& cloud, unsigned int k, double radius, unsigned int threads);
@@ -309,6 +364,23 @@ inline Estimator open3d_hybrid(const Neighborhood& n)
     open3d_estimate_normals(cloud, n.k, radius, threads);
   };
   return e;
+}
+
+/// open3d::geometry::PointCloud::OrientNormalsConsistentTangentPlane(k) on the
+/// normals of the cloud (open3d_peer.cpp).
+void open3d_orient_normals(Cloud& cloud, unsigned int k, unsigned int threads);
+
+/// Open3D's orientation (Hoppe et al. 1992 on its own graph): "open3d_orient_K10".
+/// It orients every point.
+inline Orientation open3d_orient(unsigned int k)
+{
+  Orientation o;
+  o.name = "open3d_orient_K" + std::to_string(k);
+  o.orient = [k](Cloud& cloud, unsigned int threads) {
+    open3d_orient_normals(cloud, k, threads);
+    return cloud.size();
+  };
+  return o;
 }
 #endif
 

@@ -35,8 +35,13 @@ struct Sample
 };
 typedef std::vector<Sample> Cloud;
 
+/// CGAL::mst_orient_normals() finds the point it starts from (the highest)
+/// by comparing each element of the range with it: it compares what a pair
+/// of a point and a normal, the usual element, would.
+inline bool operator==(const Sample& a, const Sample& b) { return a.point == b.point && a.normal == b.normal; }
+
 /// Property maps over `Sample`: the point an estimator reads and the normal
-/// it writes.
+/// it writes (and an orientation flips).
 struct Point_of_sample
 {
   typedef Sample key_type;
@@ -46,12 +51,15 @@ struct Point_of_sample
   friend const Point& get(Point_of_sample, const Sample& s) { return s.point; }
 };
 
+/// The normal of a sample, written by the estimators, read and flipped by
+/// the orientations.
 struct Normal_of_sample
 {
   typedef Sample key_type;
   typedef Vector value_type;
   typedef Vector reference;
-  typedef boost::writable_property_map_tag category;
+  typedef boost::read_write_property_map_tag category;
+  friend Vector get(Normal_of_sample, const Sample& s) { return s.normal; }
   friend void put(Normal_of_sample, Sample& s, const Vector& n) { s.normal = n; }
 };
 

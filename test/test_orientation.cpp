@@ -22,17 +22,6 @@ using namespace rrht_test;
 
 namespace {
 
-// The normal of a sample, read and written in place.
-struct Normal_of
-{
-  typedef Sample key_type;
-  typedef Vector value_type;
-  typedef Vector reference;
-  typedef boost::read_write_property_map_tag category;
-  friend Vector get(Normal_of, const Sample& s) { return s.normal; }
-  friend void put(Normal_of, Sample& s, const Vector& n) { s.normal = n; }
-};
-
 // A sensor beyond each point, seen from the origin.
 struct Sensor
 {
@@ -43,7 +32,7 @@ struct Sensor
   friend Point get(Sensor, const Sample& s) { return CGAL::ORIGIN + 3 * (s.point - CGAL::ORIGIN); }
 };
 
-const auto maps = CGAL::RRHT::parameters::point_map(Point_of_sample()).normal_map(Normal_of());
+const auto maps = CGAL::RRHT::parameters::point_map(Point_of_sample()).normal_map(Normal_of_sample());
 
 // Turns the exact normals of a shape centered on the origin whose faces
 // are all seen from it (cube, cylinder, plate) out of it.
