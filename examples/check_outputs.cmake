@@ -1,5 +1,6 @@
 # Checks on the files the example programs write, run by ctest:
-#   cmake -DCHECK=mesh -DFILE=out.off -DMIN_FACES=1000 -P check_outputs.cmake
+#   cmake -DCHECK=mesh -DFILE=out.off -DMIN_FACES=1000 [-DMAX_FACES=5000] -P check_outputs.cmake
+#   cmake -DCHECK=no_mesh_on_failure -DTOOL=rrht_pipeline_example -DWORK=dir -P check_outputs.cmake
 #   cmake -DCHECK=ply -DFILE=out.ply -DPOINTS=20000 [-DCONFIDENCE=ON] -P check_outputs.cmake
 #   cmake -DCHECK=rejected -DTOOL=rrht_normals "-DARGUMENTS=a|b|c" [-DEXIT_CODE=2] [-DMESSAGE=text] -P check_outputs.cmake
 #   cmake -DCHECK=failed_run_keeps_output -DTOOL=rrht_normals -DGOOD=good.xyz -DINPUT=bad.xyz -DWORK=dir -P check_outputs.cmake
@@ -14,6 +15,9 @@ if(CHECK STREQUAL "mesh")
   endif()
   if(CMAKE_MATCH_2 LESS MIN_FACES)
     message(FATAL_ERROR "${FILE} has ${CMAKE_MATCH_2} faces, fewer than ${MIN_FACES}")
+  endif()
+  if(DEFINED MAX_FACES AND CMAKE_MATCH_2 GREATER MAX_FACES)
+    message(FATAL_ERROR "${FILE} has ${CMAKE_MATCH_2} faces, more than ${MAX_FACES}")
   endif()
   message(STATUS "${FILE}: ${CMAKE_MATCH_1} vertices, ${CMAKE_MATCH_2} faces")
 elseif(CHECK STREQUAL "ply")
@@ -42,6 +46,28 @@ elseif(CHECK STREQUAL "failed_run_keeps_output")
   endif()
   file(GLOB left "${WORK}/*")
   if(NOT left STREQUAL "${WORK}/out.xyz")
+    message(FATAL_ERROR "the failed run left files behind: ${left}")
+  endif()
+elseif(CHECK STREQUAL "no_mesh_on_failure")
+  # The pipeline on points that bound no solid (a grid of the plane z = 0):
+  # exit code 1 and a message, not a crash, and no file written.
+  file(REMOVE_RECURSE "${WORK}")
+  file(MAKE_DIRECTORY "${WORK}")
+  set(points "")
+  foreach(i RANGE 40)
+    foreach(j RANGE 40)
+      string(APPEND points "${i} ${j} 0\n")
+    endforeach()
+  endforeach()
+  file(WRITE "${WORK}/plane.xyz" "${points}")
+  execute_process(COMMAND "${TOOL}" "${WORK}/plane.xyz" "${WORK}/plane.off"
+                  RESULT_VARIABLE result ERROR_VARIABLE errors OUTPUT_QUIET)
+  message(STATUS "exit code ${result}, stderr: ${errors}")
+  if(NOT result EQUAL 1 OR NOT errors MATCHES "Error: Poisson reconstruction failed: ")
+    message(FATAL_ERROR "expected exit code 1 and a message on the failed reconstruction")
+  endif()
+  file(GLOB left RELATIVE "${WORK}" "${WORK}/*")
+  if(NOT left STREQUAL "plane.xyz")
     message(FATAL_ERROR "the failed run left files behind: ${left}")
   endif()
 elseif(CHECK STREQUAL "rejected")

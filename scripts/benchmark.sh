@@ -4,8 +4,11 @@
 # renderings to benchmark/results/MODE.
 #
 #   bash scripts/benchmark.sh [quick|full] [more rrht_benchmark options]
+#   bash scripts/benchmark.sh poisson [more poisson_benchmark options]
 #
 # RRHT_BENCHMARK_RESULTS=NAME writes to benchmark/results/NAME instead.
+# poisson: the Poisson surfaces against the true meshes (poisson_benchmark,
+# about 10 minutes), into benchmark/results/poisson.
 #
 # quick takes minutes, full hours. PCL and Open3D are compared too when
 # Debian's libpcl-dev and libopen3d-dev are installed (RRHT_BENCHMARK_PCL=1
@@ -14,9 +17,12 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 mode=${1:-quick}
 shift || true
-case "$mode" in quick|full) ;; *) echo "usage: $0 [quick|full] [rrht_benchmark options]" >&2; exit 1 ;; esac
+case "$mode" in quick|full|poisson) ;; *) echo "usage: $0 [quick|full|poisson] [options of the benchmark]" >&2; exit 1 ;; esac
+program=rrht_benchmark
+[ "$mode" = poisson ] && program=poisson_benchmark
 
-extra=(python3-matplotlib)
+extra=()
+[ "$mode" != poisson ] && extra+=(python3-matplotlib) # report.py's plots
 [ "${RRHT_BENCHMARK_PCL:-0}" = 1 ] && extra+=(libpcl-dev)
 [ "${RRHT_BENCHMARK_OPEN3D:-0}" = 1 ] && extra+=(libopen3d-dev)
 bash "$root/scripts/install_dependencies.sh" "${extra[@]}"
@@ -24,7 +30,7 @@ bash "$root/scripts/install_dependencies.sh" "${extra[@]}"
 build="$root/build/benchmark"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCGAL_RRHT_BUILD_BENCHMARKS=ON \
       -DCGAL_RRHT_BUILD_TESTS=OFF -DCGAL_RRHT_BUILD_EXAMPLES=OFF > /dev/null
-cmake --build "$build" -j"$(nproc)" --target rrht_benchmark
+cmake --build "$build" -j"$(nproc)" --target "$program"
 
 commit=$(git -C "$root" describe --always --dirty 2>/dev/null || echo unknown) # before the old results go
 results=${RRHT_BENCHMARK_RESULTS:-$mode}
@@ -39,7 +45,13 @@ mkdir -p "$out" "$scratch"
        "PCL: $(dpkg-query -W -f='${Version}' libpcl-dev 2>/dev/null || echo 'not installed');" \
        "Open3D: $(dpkg-query -W -f='${Version}' libopen3d-dev 2>/dev/null || echo 'not installed')."
 } > "$out/machine.txt"
-"$build/benchmark/rrht_benchmark" --mode "$mode" --out "$out" --scratch "$scratch" \
-    --data "$root/../shared/data" "$@" | tee "$build/benchmark-${results//\//-}.log"
-/usr/bin/python3 "$root/benchmark/report.py" "$out" --scratch "$scratch"
+if [ "$mode" = poisson ]; then
+  "$build/benchmark/poisson_benchmark" --out "$out" --scratch "$scratch" --data "$root/../shared/data" "$@" |
+    tee "$build/benchmark-${results//\//-}.log"
+  { echo "# Benchmark results"; echo; cat "$out/machine.txt"; echo; echo "- [Poisson surfaces against the true meshes](poisson.md)"; } > "$out/README.md"
+else
+  "$build/benchmark/rrht_benchmark" --mode "$mode" --out "$out" --scratch "$scratch" \
+      --data "$root/../shared/data" "$@" | tee "$build/benchmark-${results//\//-}.log"
+  /usr/bin/python3 "$root/benchmark/report.py" "$out" --scratch "$scratch"
+fi
 echo "Results: $out/README.md"

@@ -1,0 +1,572 @@
+// Copyright (c) 2026 The CGAL RRHT authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The Poisson experiment (README.md here, "Poisson surfaces"): how close
+// CGAL's Poisson surface comes to the true surface when its normals are
+// RRHT's defaults oriented by CGAL::rrht_orient_normals(), jet fitting's
+// oriented by CGAL::mst_orient_normals(), or the exact normals. Writes
+// poisson.csv and poisson.md into --out, the surfaces into --scratch.
+
+#include "datasets.h"
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/rrht_estimate_normals.h>
+#include <CGAL/rrht_orient_normals.h>
+#include <CGAL/jet_estimate_normals.h>
+#include <CGAL/mst_orient_normals.h>
+#include <CGAL/compute_average_spacing.h>
+#include <CGAL/Poisson_reconstruction_function.h>
+#if CGAL_VERSION_NR >= CGAL_VERSION_NUMBER(6, 0, 0)
+#include <CGAL/Mesh_triangulation_3.h>
+#include <CGAL/Mesh_complex_3_in_triangulation_3.h>
+#include <CGAL/Mesh_criteria_3.h>
+#include <CGAL/Labeled_mesh_domain_3.h>
+#include <CGAL/make_mesh_3.h>
+#include <CGAL/facets_in_complex_3_to_triangle_mesh.h>
+#else
+#include <CGAL/Implicit_surface_3.h>
+#include <CGAL/make_surface_mesh.h>
+#include <CGAL/Surface_mesh_default_triangulation_3.h>
+#include <CGAL/IO/facets_in_complex_2_to_triangle_mesh.h>
+#endif
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/generators.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+// GCC 12 at -O3 warns of a maybe uninitialized value within CGAL 5.5's
+// self_intersections.h, which corefinement.h instantiates.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
+#include <CGAL/Polygon_mesh_processing/corefinement.h>
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
+#include <CGAL/Polygon_mesh_processing/detect_features.h>
+#include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_segment_primitive.h>
+#include <CGAL/Random.h>
+#include <CGAL/centroid.h>
+#include <CGAL/Real_timer.h>
+
+#include <boost/program_options.hpp>
+#include <tbb/global_control.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace po = boost::program_options;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Point;
+typedef K::Vector_3 Vector;
+typedef K::Segment_3 Segment;
+typedef std::pair<Point, Vector> Point_with_normal;
+typedef CGAL::First_of_pair_property_map<Point_with_normal> Point_map;
+typedef CGAL::Second_of_pair_property_map<Point_with_normal> Normal_map;
+typedef CGAL::Surface_mesh<Point> Mesh;
+typedef boost::graph_traits<Mesh>::face_descriptor Face;
+typedef CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_face_graph_triangle_primitive<Mesh> > > Face_tree;
+typedef std::vector<Segment>::const_iterator Segment_iterator;
+typedef CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_segment_primitive<K, Segment_iterator> > > Segment_tree;
+typedef CGAL::Poisson_reconstruction_function<K> Poisson_function;
+
+const double sharp_angle = 30;     // degrees between the normals of two faces: a sharp edge
+const double near_edge = 0.01;     // near a sharp edge: within 1% of the diagonal of it
+const std::size_t samples = 200000; // points sampled on each surface for the distances
+
+/// A true surface: its triangles, outward, and its sharp edges.
+struct Truth
+{
+  Mesh mesh;
+  std::vector<Segment> sharp_edges;
+  double diagonal = 0;
+};
+
+/// Triangulates `mesh`, turns it outward, and finds its sharp edges. False
+/// if it is not closed (outward is then undefined).
+bool make_truth(Mesh mesh, Truth& truth)
+{
+  PMP::triangulate_faces(mesh);
+  if(!CGAL::is_closed(mesh))
+    return false;
+  if(!PMP::is_outward_oriented(mesh))
+    PMP::reverse_face_orientations(mesh);
+  auto sharp = mesh.add_property_map<Mesh::Edge_index, bool>("e:sharp", false).first;
+  PMP::detect_sharp_edges(mesh, sharp_angle, sharp);
+  truth.sharp_edges.clear();
+  for(Mesh::Edge_index e : mesh.edges())
+    if(sharp[e])
+      truth.sharp_edges.emplace_back(mesh.point(mesh.vertex(e, 0)), mesh.point(mesh.vertex(e, 1)));
+  const CGAL::Bbox_3 box = PMP::bbox(mesh);
+  truth.diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                             CGAL::square(box.zmax() - box.zmin()));
+  truth.mesh = std::move(mesh);
+  return true;
+}
+
+/// The finned part of test/shapes.h, `finned_part()`, as a closed mesh: the
+/// union of its boxes (exact corefinement, then rounded).
+Mesh finned_part_mesh()
+{
+  typedef CGAL::Exact_predicates_exact_constructions_kernel E;
+  typedef CGAL::Surface_mesh<E::Point_3> Exact_mesh;
+  const auto box = [](double x0, double y0, double z0, double x1, double y1, double z1) {
+    Exact_mesh m;
+    CGAL::make_hexahedron(E::Point_3(x0, y0, z0), E::Point_3(x1, y0, z0), E::Point_3(x1, y1, z0),
+                          E::Point_3(x0, y1, z0), E::Point_3(x0, y1, z1), E::Point_3(x0, y0, z1),
+                          E::Point_3(x1, y0, z1), E::Point_3(x1, y1, z1), m);
+    PMP::triangulate_faces(m);
+    if(!PMP::is_outward_oriented(m))
+      PMP::reverse_face_orientations(m);
+    return m;
+  };
+  // The same boxes as finned_part(): 8 fins 0.03 thick, 0.03 apart, on a block.
+  const int fins = 8;
+  const double thickness = 0.03, gap = 0.03, start = -(fins * thickness + (fins - 1) * gap) / 2;
+  Exact_mesh part = box(-1, -1, -0.3, 1, 1, 0);
+  for(int i = 0; i < fins; ++i)
+  {
+    const double x0 = start + i * (thickness + gap);
+    Exact_mesh fin = box(x0, -0.8, 0, x0 + thickness, 0.8, 0.6);
+    if(!PMP::corefine_and_compute_union(part, fin, part))
+      throw std::runtime_error("the union of the finned part's boxes failed");
+  }
+  Mesh mesh;
+  CGAL::copy_face_graph(part, mesh);
+  return mesh;
+}
+
+/// One normal set fed to Poisson.
+enum class Normals { RRHT, JET, EXACT };
+const char* name(Normals n) { return n == Normals::RRHT ? "rrht_orient" : n == Normals::JET ? "jet_mst" : "exact"; }
+const char* label(Normals n)
+{
+  return n == Normals::RRHT ? "RRHT defaults (K = 100) + `rrht_orient_normals` (k = 18)"
+         : n == Normals::JET ? "jet fitting (K = 18) + `mst_orient_normals` (k = 18)"
+                             : "exact normals";
+}
+
+/// Estimates and orients the normals; returns how many points were dropped
+/// (not oriented) and the seconds taken.
+std::pair<std::size_t, double> normals(Normals which, std::vector<Point_with_normal>& points)
+{
+  const auto maps = CGAL::RRHT::parameters::point_map(Point_map()).normal_map(Normal_map());
+  const std::size_t before = points.size();
+  CGAL::Real_timer timer;
+  timer.start();
+  if(which == Normals::RRHT)
+  {
+    CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(points, 100, maps);
+    points.erase(CGAL::rrht_orient_normals<CGAL::Parallel_if_available_tag>(points, 18, maps), points.end());
+  }
+  else if(which == Normals::JET)
+  {
+    CGAL::jet_estimate_normals<CGAL::Parallel_if_available_tag>(points, 18, maps);
+    points.erase(CGAL::mst_orient_normals(points, 18, maps), points.end());
+  }
+  timer.stop();
+  return { before - points.size(), timer.time() };
+}
+
+/// Meshes the zero level of `function`: mesh_zero_level() of
+/// examples/rrht_pipeline_example.cpp, which has the comments.
+bool mesh_zero_level(const Poisson_function& function, double spacing, Mesh& mesh)
+{
+  const K::Sphere_3 sphere(function.get_inner_point(), 25 * function.bounding_sphere().squared_radius());
+  const double distance = 0.375 * spacing, error = distance / 1000 / std::sqrt(sphere.squared_radius());
+#if CGAL_VERSION_NR >= CGAL_VERSION_NUMBER(6, 0, 0)
+  typedef CGAL::Labeled_mesh_domain_3<K> Domain;
+  typedef CGAL::Mesh_triangulation_3<Domain, CGAL::Default, CGAL::Sequential_tag>::type Triangulation;
+  typedef CGAL::Mesh_complex_3_in_triangulation_3<Triangulation> C3t3;
+  const Domain domain =
+    Domain::create_implicit_mesh_domain(function, sphere, CGAL::parameters::relative_error_bound(error));
+  const CGAL::Mesh_criteria_3<Triangulation> criteria(CGAL::parameters::facet_angle = 20.,
+                                                      CGAL::parameters::facet_size = 30 * spacing,
+                                                      CGAL::parameters::facet_distance = distance);
+  const C3t3 c3t3 = CGAL::make_mesh_3<C3t3>(domain, criteria,
+                                            CGAL::parameters::no_exude().no_perturb().manifold_with_boundary());
+  if(c3t3.triangulation().number_of_vertices() == 0)
+    return false;
+  CGAL::facets_in_complex_3_to_triangle_mesh(c3t3, mesh);
+#else
+  typedef CGAL::Surface_mesh_default_triangulation_3 Triangulation;
+  typedef CGAL::Surface_mesh_complex_2_in_triangulation_3<Triangulation> C2t3;
+  const CGAL::Implicit_surface_3<K, Poisson_function> surface(function, sphere, error);
+  const CGAL::Surface_mesh_default_criteria_3<Triangulation> criteria(20., 30 * spacing, distance);
+  Triangulation triangulation;
+  C2t3 c2t3(triangulation);
+  CGAL::get_default_random() = CGAL::Random(0);
+  CGAL::make_surface_mesh(c2t3, surface, criteria, CGAL::Manifold_with_boundary_tag());
+  if(triangulation.number_of_vertices() == 0)
+    return false;
+  CGAL::facets_in_complex_2_to_triangle_mesh(c2t3, mesh);
+#endif
+  return true;
+}
+
+/// Poisson with the checks of reconstruct() in
+/// examples/rrht_pipeline_example.cpp. Returns why it failed, or an empty
+/// string.
+std::string poisson(const std::vector<Point_with_normal>& points, double spacing, Mesh& mesh)
+{
+  if(points.empty())
+    return "no points left";
+  Poisson_function function(points.begin(), points.end(), Point_map(), Normal_map());
+  if(function.tr().dimension() < 3)
+    return "the points lie in a plane";
+  if(!function.compute_implicit_function())
+    return "the Poisson equation could not be solved";
+  std::vector<Poisson_function::Triangulation::Vertex_handle> hull;
+  function.tr().adjacent_vertices(function.tr().infinite_vertex(), std::back_inserter(hull));
+  const std::size_t negative =
+    std::count_if(hull.begin(), hull.end(), [](const auto& v) { return v->f() < 0; });
+  if(function(function.get_inner_point()) >= 0 || negative > 0.02 * hull.size())
+    return "refused: the implicit function is negative at " + std::to_string(negative) + " of the " +
+           std::to_string(hull.size()) + " vertices of its hull";
+  try
+  {
+    if(!mesh_zero_level(function, spacing, mesh))
+      return "the surface mesher found no surface";
+  }
+  catch(const CGAL::Failure_exception& e)
+  {
+    return "the surface mesher failed: " + e.message().substr(0, e.message().find('\n'));
+  }
+  return std::string();
+}
+
+/// Distances from a uniform sample of `from` to `to`, in % of `diagonal`:
+/// the mean and the 99th percentile.
+std::pair<double, double> distances(const Mesh& from, const Face_tree& to, double diagonal)
+{
+  std::vector<Point> sample;
+  PMP::sample_triangle_mesh(from, std::back_inserter(sample),
+                            CGAL::parameters::number_of_points_on_faces(samples)
+                              .do_sample_vertices(false)
+                              .do_sample_edges(false)
+                              .random_seed(1));
+  std::vector<double> d;
+  d.reserve(sample.size());
+  double sum = 0;
+  for(const Point& p : sample)
+  {
+    d.push_back(std::sqrt(to.squared_distance(p)) / diagonal * 100);
+    sum += d.back();
+  }
+  if(d.empty())
+    return { 0, 0 };
+  std::nth_element(d.begin(), d.begin() + d.size() * 99 / 100, d.end());
+  return { sum / d.size(), d[d.size() * 99 / 100] };
+}
+
+/// The normal error of the reconstructed surface: for each of its faces, the
+/// unoriented angle between its normal and the true normal at the point of
+/// the true surface closest to its centroid, weighted by its area; near a
+/// sharp edge when that closest point is within `near_edge` of the diagonal
+/// of one.
+struct Normal_errors
+{
+  double near_mean = 0, near_above10 = 0, near_area_percent = 0, far_mean = 0;
+};
+
+Normal_errors normal_errors(const Mesh& mesh, const Truth& truth, const Face_tree& true_faces,
+                            const Segment_tree& sharp_edges)
+{
+  double near_area = 0, near_sum = 0, near_bad = 0, far_area = 0, far_sum = 0;
+  for(Face f : mesh.faces())
+  {
+    const auto h = mesh.halfedge(f);
+    const Point &a = mesh.point(mesh.source(h)), &b = mesh.point(mesh.target(h)),
+                &c = mesh.point(mesh.target(mesh.next(h)));
+    const Vector n = CGAL::cross_product(b - a, c - a);
+    const double area = std::sqrt(n.squared_length()) / 2;
+    if(!(area > 0))
+      continue;
+    const auto closest = true_faces.closest_point_and_primitive(CGAL::centroid(a, b, c));
+    const Vector t = PMP::compute_face_normal(closest.second, truth.mesh);
+    const double cosine = std::min(1., std::abs(n * t) / (2 * area));
+    const double angle = std::acos(cosine) * 180 / CGAL_PI;
+    const bool near = !truth.sharp_edges.empty() &&
+                      sharp_edges.squared_distance(closest.first) <= CGAL::square(near_edge * truth.diagonal);
+    (near ? near_area : far_area) += area;
+    (near ? near_sum : far_sum) += area * angle;
+    if(near && angle > 10)
+      near_bad += area;
+  }
+  Normal_errors e;
+  if(near_area > 0)
+  {
+    e.near_mean = near_sum / near_area;
+    e.near_above10 = near_bad / near_area * 100;
+  }
+  if(far_area > 0)
+    e.far_mean = far_sum / far_area;
+  e.near_area_percent = near_area / (near_area + far_area) * 100;
+  return e;
+}
+
+/// The share of the points whose oriented normal points against the truth,
+/// among those within 60 degrees of its line (as the orientation experiment
+/// scores; on a sharp edge, a normal may take the other face's). The points
+/// are matched by position: the orientations reorder them.
+double flipped_percent(const std::vector<Point_with_normal>& oriented, const rrht_test::Cloud& cloud)
+{
+  std::vector<std::pair<Point, Vector> > truth;
+  truth.reserve(cloud.size());
+  for(const rrht_test::Sample& s : cloud)
+    truth.emplace_back(Point(s.point.x(), s.point.y(), s.point.z()), Vector(s.truth.x(), s.truth.y(), s.truth.z()));
+  const auto less = [](const Point_with_normal& p, const Point_with_normal& q) { return p.first < q.first; };
+  std::sort(truth.begin(), truth.end(), less);
+  std::size_t flipped = 0, scored = 0;
+  for(const Point_with_normal& p : oriented)
+  {
+    const auto t = std::lower_bound(truth.begin(), truth.end(), p, less);
+    if(t == truth.end() || t->first != p.first)
+      continue;
+    const double cosine = p.second * t->second / std::sqrt(p.second.squared_length() * t->second.squared_length());
+    if(std::abs(cosine) >= 0.5)
+    {
+      ++scored;
+      flipped += cosine < 0;
+    }
+  }
+  return scored == 0 ? 0 : 100. * flipped / scored;
+}
+
+struct Shape
+{
+  std::string name;
+  rrht_test::Cloud cloud; // clean, truth outward
+  Truth truth;
+};
+
+/// The shapes: meshes of ../shared/data sampled (face normal as truth) and
+/// the finned part. A mesh absent is skipped, with a message.
+std::vector<Shape> shapes(const std::string& data, const std::vector<std::string>& names, std::size_t n)
+{
+  std::vector<Shape> result;
+  for(const std::string& name : names)
+  {
+    Shape s;
+    s.name = name;
+    Mesh mesh;
+    if(name == "finned")
+    {
+      mesh = finned_part_mesh();
+      s.cloud = rrht_test::finned_part(n, 7);
+    }
+    else
+    {
+      const std::string file = name == "cube" ? "cube-meshed" : name;
+      const std::string path = data + "/meshes/" + file + ".off";
+      if(!CGAL::IO::read_polygon_mesh(path, mesh) || !rrht_test::sample_mesh(path, n, 7, s.cloud))
+      {
+        std::cout << "skipped (not found): " << path << std::endl;
+        continue;
+      }
+    }
+    // A mesh's faces may wind either way; so do the normals sampled on them.
+    PMP::triangulate_faces(mesh);
+    const double sign = CGAL::is_closed(mesh) && PMP::is_outward_oriented(mesh) ? 1. : -1.;
+    if(!make_truth(mesh, s.truth))
+      throw std::runtime_error("the true surface of " + name + " is not closed");
+    for(rrht_test::Sample& t : s.cloud)
+      t.truth = sign * t.truth / std::sqrt(t.truth.squared_length());
+    // The cloud must lie on the true surface, and its normals point out.
+    Face_tree tree(faces(s.truth.mesh).first, faces(s.truth.mesh).second, s.truth.mesh);
+    tree.accelerate_distance_queries();
+    double farthest = 0, outward = 0;
+    for(const rrht_test::Sample& t : s.cloud)
+    {
+      const Point p(t.point.x(), t.point.y(), t.point.z());
+      farthest = std::max(farthest, std::sqrt(tree.squared_distance(p)));
+      const auto closest = tree.closest_point_and_primitive(p);
+      const Vector normal = PMP::compute_face_normal(closest.second, s.truth.mesh);
+      outward += normal.x() * t.truth.x() + normal.y() * t.truth.y() + normal.z() * t.truth.z() > 0;
+    }
+    if(farthest > 1e-9 * s.truth.diagonal || outward < 0.999 * s.cloud.size())
+      throw std::runtime_error(name + ": the cloud is not on its true surface, or not outward");
+    std::cout << name << ": " << s.cloud.size() << " points, true mesh of " << s.truth.mesh.number_of_faces()
+              << " triangles and " << s.truth.sharp_edges.size() << " sharp edges (above " << sharp_angle
+              << " degrees)" << std::endl;
+    result.push_back(std::move(s));
+  }
+  return result;
+}
+
+std::vector<std::string> split(const std::string& list)
+{
+  std::vector<std::string> items;
+  std::stringstream stream(list);
+  for(std::string item; std::getline(stream, item, ',');)
+    if(!item.empty())
+      items.push_back(item);
+  return items;
+}
+
+std::string fixed(double value, int digits)
+{
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(digits) << value;
+  return s.str();
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  po::options_description options("poisson_benchmark: Poisson surfaces from three sets of normals against the true "
+                                  "surfaces (benchmark/README.md)");
+  options.add_options()("help", "this help")
+    ("data", po::value<std::string>()->default_value("../shared/data"), "the shared data folder (MANIFEST.md)")
+    ("out", po::value<std::string>()->required(), "folder of poisson.csv and poisson.md")
+    ("scratch", po::value<std::string>()->default_value(""), "folder of the surfaces (.off), if given")
+    ("shapes", po::value<std::string>()->default_value("fandisk,anchor,cube,finned"),
+     "comma-separated: fandisk, anchor, cube (meshes of --data) and finned (test/shapes.h)")
+    ("points", po::value<std::size_t>()->default_value(100000), "points per cloud")
+    ("noise", po::value<std::string>()->default_value("0,0.2"),
+     "comma-separated noise levels, in % of the bounding-box diagonal")
+    ("threads", po::value<unsigned int>()->default_value(2), "threads of the estimations and orientations");
+  po::variables_map vm;
+  try
+  {
+    po::store(po::parse_command_line(argc, argv, options), vm);
+    if(vm.count("help"))
+    {
+      std::cout << options << std::endl;
+      return 0;
+    }
+    po::notify(vm);
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << "poisson_benchmark: " << e.what() << std::endl;
+    return 2;
+  }
+  const std::string out = vm["out"].as<std::string>(), scratch = vm["scratch"].as<std::string>();
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism, vm["threads"].as<unsigned int>());
+
+  std::ofstream csv(out + "/poisson.csv"), md(out + "/poisson.md");
+  if(!csv || !md)
+  {
+    std::cerr << "poisson_benchmark: cannot write into " << out << std::endl;
+    return 1;
+  }
+  csv << "shape,noise_percent,points,normals,dropped,flipped_percent,normals_s,poisson_s,status,faces,"
+         "to_true_mean_percent,to_true_p99_percent,from_true_mean_percent,from_true_p99_percent,"
+         "near_edge_area_percent,near_edge_mean_deg,near_edge_above10_percent,elsewhere_mean_deg,message\n";
+  md << "# Poisson surfaces against the true surfaces\n\n"
+        "CGAL's Poisson reconstruction (the parameters of `poisson_surface_reconstruction_delaunay()`, average "
+        "spacing of 6 neighbors, through the checks of `examples/rrht_pipeline_example.cpp`) from three sets of "
+        "oriented normals. Distances in % of the true mesh's bounding-box diagonal, over "
+        << samples
+        << " points sampled uniformly on each surface: *to true* from the reconstructed surface to the true "
+           "one (how far it strays), *from true* from the true surface to the reconstructed one (what it "
+           "misses). Normal errors are unoriented angles, weighted by area, between each reconstructed face "
+           "and the true face closest to its centroid; *near edges*: that closest point is within "
+        << near_edge * 100 << "% of the diagonal of a sharp edge of the true mesh (faces whose normals differ by "
+        << sharp_angle
+        << " degrees or more). *Flipped*: points whose oriented normal points into the solid, among those "
+           "within 60 degrees of the exact normal's line. A failed or refused reconstruction is reported with "
+           "its message.\n";
+
+  try
+  {
+    const std::vector<Shape> all =
+      shapes(vm["data"].as<std::string>(), split(vm["shapes"].as<std::string>()), vm["points"].as<std::size_t>());
+    for(const Shape& shape : all)
+    {
+      Face_tree true_faces(faces(shape.truth.mesh).first, faces(shape.truth.mesh).second, shape.truth.mesh);
+      true_faces.accelerate_distance_queries();
+      Segment_tree sharp_edges(shape.truth.sharp_edges.begin(), shape.truth.sharp_edges.end());
+      if(!shape.truth.sharp_edges.empty())
+        sharp_edges.accelerate_distance_queries();
+      for(const std::string& noise_text : split(vm["noise"].as<std::string>()))
+      {
+        const double noise = std::stod(noise_text);
+        rrht_test::Cloud cloud = shape.cloud;
+        rrht_test::add_noise(cloud, noise, 1007);
+        md << "\n## " << shape.name << ", " << cloud.size() << " points, noise " << noise << "%\n\n"
+           << "| normals | dropped | flipped % | to true: mean % | p99 % | from true: mean % | p99 % "
+              "| near edges: mean ° | > 10° (area %) | elsewhere: mean ° | faces | normals s | Poisson s |\n"
+           << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+        for(Normals which : { Normals::RRHT, Normals::JET, Normals::EXACT })
+        {
+          std::vector<Point_with_normal> points;
+          for(const rrht_test::Sample& s : cloud)
+            points.emplace_back(Point(s.point.x(), s.point.y(), s.point.z()),
+                                which == Normals::EXACT ? Vector(s.truth.x(), s.truth.y(), s.truth.z())
+                                                        : CGAL::NULL_VECTOR);
+          const double spacing = CGAL::compute_average_spacing<CGAL::Parallel_if_available_tag>(
+            points, 6, CGAL::parameters::point_map(Point_map()));
+          const auto [dropped, normals_s] = normals(which, points);
+          const double flipped = flipped_percent(points, cloud);
+          std::cout << shape.name << ", noise " << noise << "%, " << name(which) << ": " << std::flush;
+          CGAL::Real_timer timer;
+          timer.start();
+          Mesh mesh;
+          const std::string failure = poisson(points, spacing, mesh);
+          timer.stop();
+          csv << shape.name << ',' << noise << ',' << cloud.size() << ',' << name(which) << ',' << dropped << ','
+              << flipped << ',' << normals_s << ',' << timer.time() << ',';
+          md << "| " << label(which) << " | " << dropped << " | " << fixed(flipped, 2) << " | ";
+          if(!failure.empty())
+          {
+            std::cout << failure << std::endl;
+            csv << "failed,,,,,,,,,\"" << failure << "\"\n";
+            md << "failed: " << failure << " | | | | | | | | " << fixed(normals_s, 1) << " | "
+               << fixed(timer.time(), 1) << " |\n";
+            continue;
+          }
+          if(!scratch.empty())
+            CGAL::IO::write_polygon_mesh(scratch + "/" + shape.name + "_noise" + noise_text + "_" + name(which) +
+                                           ".off",
+                                         mesh, CGAL::parameters::stream_precision(9));
+          Face_tree reconstructed(faces(mesh).first, faces(mesh).second, mesh);
+          reconstructed.accelerate_distance_queries();
+          const auto to_true = distances(mesh, true_faces, shape.truth.diagonal);
+          const auto from_true = distances(shape.truth.mesh, reconstructed, shape.truth.diagonal);
+          const Normal_errors e = normal_errors(mesh, shape.truth, true_faces, sharp_edges);
+          std::cout << mesh.number_of_faces() << " faces; to true " << to_true.first << "% (p99 "
+                    << to_true.second << "%), from true " << from_true.first << "% (p99 " << from_true.second
+                    << "%); near edges " << e.near_mean << " deg, " << e.near_above10 << "% above 10 deg"
+                    << std::endl;
+          csv << "ok," << mesh.number_of_faces() << ',' << to_true.first << ',' << to_true.second << ','
+              << from_true.first << ',' << from_true.second << ',' << e.near_area_percent << ',' << e.near_mean
+              << ',' << e.near_above10 << ',' << e.far_mean << ",\n";
+          md << fixed(to_true.first, 3) << " | " << fixed(to_true.second, 3) << " | " << fixed(from_true.first, 3)
+             << " | " << fixed(from_true.second, 3) << " | " << fixed(e.near_mean, 1) << " | "
+             << fixed(e.near_above10, 1) << " | " << fixed(e.far_mean, 1) << " | " << mesh.number_of_faces()
+             << " | " << fixed(normals_s, 1) << " | " << fixed(timer.time(), 1) << " |\n";
+        }
+      }
+    }
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << "poisson_benchmark: " << e.what() << std::endl;
+    return 1;
+  }
+  return 0;
+}
