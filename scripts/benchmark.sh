@@ -8,7 +8,7 @@
 #
 # RRHT_BENCHMARK_RESULTS=NAME writes to benchmark/results/NAME instead.
 # poisson: the Poisson surfaces against the true meshes (poisson_benchmark,
-# about 10 minutes), into benchmark/results/poisson.
+# about 10 minutes) and their pictures, into benchmark/results/poisson.
 #
 # quick takes minutes, full hours. PCL and Open3D are compared too when
 # Debian's libpcl-dev and libopen3d-dev are installed (RRHT_BENCHMARK_PCL=1
@@ -21,8 +21,7 @@ case "$mode" in quick|full|poisson) ;; *) echo "usage: $0 [quick|full|poisson] [
 program=rrht_benchmark
 [ "$mode" = poisson ] && program=poisson_benchmark
 
-extra=()
-[ "$mode" != poisson ] && extra+=(python3-matplotlib) # report.py's plots
+extra=(python3-matplotlib) # report.py's plots, poisson_pictures.py's pictures
 [ "${RRHT_BENCHMARK_PCL:-0}" = 1 ] && extra+=(libpcl-dev)
 [ "${RRHT_BENCHMARK_OPEN3D:-0}" = 1 ] && extra+=(libopen3d-dev)
 bash "$root/scripts/install_dependencies.sh" "${extra[@]}"
@@ -48,6 +47,7 @@ mkdir -p "$out" "$scratch"
 if [ "$mode" = poisson ]; then
   "$build/benchmark/poisson_benchmark" --out "$out" --scratch "$scratch" --data "$root/../shared/data" "$@" |
     tee "$build/benchmark-${results//\//-}.log"
+  /usr/bin/python3 "$root/benchmark/poisson_pictures.py" "$out" "$scratch"
   { echo "# Benchmark results"; echo; cat "$out/machine.txt"; echo; echo "- [Poisson surfaces against the true meshes](poisson.md)"; } > "$out/README.md"
 else
   "$build/benchmark/rrht_benchmark" --mode "$mode" --out "$out" --scratch "$scratch" \

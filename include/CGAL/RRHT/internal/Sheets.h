@@ -31,12 +31,14 @@ public:
   /// the whole cloud, `noise` (`spread_within_sheets()`'s median).
   ///
   /// The sorted offsets are split into three, else two, groups of least
-  /// squared deviation (1D k-means, exact), each of two offsets or more. The
+  /// squared deviation (1D k-means, exact), each of two offsets and an
+  /// eighth of them or more. The
   /// split stands when the gap between any two adjacent groups' means is
-  /// over 4 times the spread within the groups and 5 times `noise`: the
-  /// local test keeps one noisy sheet from being split, the global one a
-  /// neighborhood whose few offsets happen to bunch up. Otherwise it is one
-  /// sheet.
+  /// over 3.5 times the spread within the groups and 2.5 times `noise`: the
+  /// local test keeps one noisy sheet from being split (its two halves are
+  /// about 2.7 spreads apart; two sheets 5 noise deviations apart, 5), the
+  /// global one a neighborhood whose few offsets happen to bunch up.
+  /// Otherwise it is one sheet.
   Sheets(std::vector<double>& offsets, double noise)
   {
     for(int groups = 3; groups >= 2; --groups)
@@ -73,6 +75,9 @@ public:
     return split.found ? split.spread : 0.;
   }
 
+  /// Whether the neighborhood holds more than one sheet.
+  bool several() const { return m_groups > 1; }
+
   /// +1 if a point at offset `offset` is on the point's own sheet, -1 if on
   /// an adjacent one, 0 if it is too close to the boundary between two
   /// sheets to tell or on a sheet farther away.
@@ -92,11 +97,14 @@ public:
   }
 
 private:
-  static constexpr double local_ratio = 4, global_ratio = 5;
+  static constexpr double local_ratio = 3.5, global_ratio = 2.5;
   // The share of half the gap between two sheets, on either side of the
   // boundary, in which an offset is on neither for sure.
   static constexpr double unsure_share = 0.2;
-  static constexpr std::size_t min_group = 2;
+  // A sheet holds at least 2 offsets and an eighth of them: a few points
+  // with wrong normals between two sheets are not one.
+  static constexpr std::size_t min_points = 2;
+  static constexpr double min_share = 0.125;
 
   /// The split of sorted offsets into 2 or 3 contiguous groups of least
   /// squared deviation from their means, by trying every split (at most
@@ -110,6 +118,7 @@ private:
     Split(std::vector<double>& offsets, int groups)
     {
       const std::size_t n = offsets.size();
+      const std::size_t min_group = (std::max)(min_points, std::size_t(min_share * double(n)));
       if(n < std::size_t(groups) * min_group)
         return;
       std::sort(offsets.begin(), offsets.end());

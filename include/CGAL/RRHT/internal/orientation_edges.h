@@ -38,15 +38,15 @@ struct Signed_edge
   double weight;
 };
 
-/// The neighbors' offsets from the tangent plane of `normal` at the point
-/// at position `point`:
+/// The offsets of the `nearest` first neighbors from the tangent plane of
+/// `normal` at the point at position `point`:
 /// their first quartile, in absolute value, is the scale of the noise across
 /// the surface that the other side of a thin part does not inflate.
-inline double offset_scale(const Neighborhood& neighborhood, std::size_t point, const Eigen::Vector3d& normal,
-                           std::vector<double>& work)
+inline double offset_scale(const Neighborhood& neighborhood, std::size_t nearest, std::size_t point,
+                           const Eigen::Vector3d& normal, std::vector<double>& work)
 {
   work.clear();
-  for(std::size_t t = 0; t < neighborhood.points.size(); ++t)
+  for(std::size_t t = 0; t < nearest; ++t)
     if(neighborhood.positions[t] != point)
       work.push_back(std::abs(normal.dot(neighborhood.points[t])));
   if(work.empty())
@@ -56,16 +56,20 @@ inline double offset_scale(const Neighborhood& neighborhood, std::size_t point, 
   return *quartile;
 }
 
+/// Normals within 30 degrees of each other are parallel.
+constexpr double cos_parallel = 0.8660254037844386;
+
 /// The signed weight of the edge from a point with unit normal `ni` to a
 /// neighbor at `d` from it with unit normal `nj`, their offset scales `si`
 /// and `sj` and the sheets of their neighborhoods `hi` and `hj`.
 ///
 /// - Nearly parallel normals (within 30 degrees) are on one smooth sheet when
 ///   each point lies within the noise of the other's tangent plane (with
-///   the bend that the angle of the normals implies): their dot product
-///   says whether they agree (Hoppe et al. 1992). Farther apart, when each
-///   is on the sheet next to the other's (`Sheets`) across the chord, they
-///   are the two sides of a thin part, or of a narrow gap, whose outward
+///   the bend that the angle of the normals implies), and, where either
+///   neighborhood holds several sheets (`Sheets`), on the other's sheet:
+///   their dot product says whether they agree (Hoppe et al. 1992). When
+///   each is on the sheet next to the other's, across the chord, they are
+///   the two sides of a thin part, or of a narrow gap, whose outward
 ///   normals point away from each other, or towards each other: opposite.
 ///   Otherwise, no evidence.
 /// - Across a sharp edge, the dot product is noise (perpendicular normals).
@@ -77,7 +81,6 @@ inline double offset_scale(const Neighborhood& neighborhood, std::size_t point, 
 inline double signed_weight(const Eigen::Vector3d& d, const Eigen::Vector3d& ni, const Eigen::Vector3d& nj, double si,
                             double sj, const Sheets& hi, const Sheets& hj)
 {
-  const double cos_parallel = 0.8660254037844386; // cos 30 degrees
   const double noise_factor = 7, normal_tolerance = 0.03;
   const double length = d.norm(), c = ni.dot(nj);
   if(!(length > 0))
@@ -87,17 +90,26 @@ inline double signed_weight(const Eigen::Vector3d& d, const Eigen::Vector3d& ni,
     const double oi = ni.dot(d), oj = -nj.dot(d); // each one's offset from the other's tangent plane
     const double half_angle_sine = std::sqrt((std::max)(0., (1 - std::abs(c)) / 2));
     const double band = noise_factor * (std::min)(si, sj) + length * (half_angle_sine + normal_tolerance);
-    if(std::abs(oi) <= band && std::abs(oj) <= band)
-      return c;
-    // Across a thin part the chord runs along the normals; across a step or
-    // the rim of a plate, whose near points may take the rim's normal, it is
-    // oblique.
     const double along = 0.7071067811865476 * length; // within 45 degrees
-    return hi.side(oi) == -1 && hj.side(oj) == -1 && std::abs(oi) > along && std::abs(oj) > along ? -c : 0.;
+    if(hi.several() || hj.several())
+    {
+      // The band may reach across to the next sheet: the sheets decide.
+      // Across a thin part the chord runs along the normals; across a step
+      // or the rim of a plate, whose near points may take the rim's normal,
+      // it is oblique.
+      const int side_i = hi.side(oi), side_j = hj.side(oj);
+      if(side_i == 1 && side_j == 1 && std::abs(oi) <= band && std::abs(oj) <= band)
+        return c;
+      return side_i == -1 && side_j == -1 && std::abs(oi) > along && std::abs(oj) > along ? -c : 0.;
+    }
+    return std::abs(oi) <= band && std::abs(oj) <= band ? c : 0.;
   }
   const Eigen::Vector3d u = d / length;
   return c - 2 * ni.dot(u) * nj.dot(u);
 }
+
+/// The number of neighbors whose offsets tell the sheets apart, at least.
+constexpr unsigned int sheet_neighbors = 48;
 
 /// The edges of the graph whose vertices are the points of `search` and
 /// whose edges join each point to its `k` nearest neighbors (once per
@@ -111,11 +123,16 @@ std::vector<Signed_edge> orientation_edges(const Neighbor_search& search, const 
 {
   const std::size_t size = search.size();
   k = static_cast<unsigned int>((std::min<std::size_t>)(k, size - 1));
+  // The sheets are told apart on more neighbors than the edges join: a
+  // split of a few offsets is unsure where the sheets are only a few times
+  // the noise apart.
+  const unsigned int sheet_k =
+    static_cast<unsigned int>((std::min<std::size_t>)((std::max)(k, sheet_neighbors), size - 1));
   // The neighbors of every point, k per point, their offset scales, and the
-  // offsets of the point and its neighbors from its tangent plane.
-  const std::size_t row = k + 1;
+  // offsets of the point and its sheet_k neighbors from its tangent plane.
+  const std::size_t row = sheet_k + 1;
   std::vector<std::uint32_t> neighbors(size * k);
-  std::vector<double> scales(size), offsets(size * row), spreads(size);
+  std::vector<double> scales(size), offsets(size * row), spreads(size), radii(size);
   std::vector<std::size_t> counts(size);
   areas.assign(size, 0.);
   struct Scratch
@@ -130,27 +147,38 @@ std::vector<Signed_edge> orientation_edges(const Neighbor_search& search, const 
                                  [&](std::size_t begin, std::size_t end, Scratch& scratch) {
     for(std::size_t i = begin; i < end; ++i)
     {
-      search.find(i, k, 0., scratch.neighborhood, scratch.search);
+      search.find(i, sheet_k, 0., scratch.neighborhood, scratch.search);
       // The point itself is not always first: a duplicate with a smaller id
       // comes before it.
       const std::vector<std::size_t>& positions = scratch.neighborhood.positions;
+      const std::size_t nearest = (std::min<std::size_t>)(positions.size(), std::size_t(k) + 1);
       std::size_t t = 0;
-      for(std::size_t position : positions)
-        if(position != i && t < k)
-          neighbors[i * k + t++] = std::uint32_t(position);
-      scales[i] = offset_scale(scratch.neighborhood, i, normals[i], scratch.work);
-      counts[i] = (std::min)(positions.size(), row);
-      for(std::size_t u = 0; u < counts[i]; ++u)
-        offsets[i * row + u] = normals[i].dot(scratch.neighborhood.points[u]);
+      for(std::size_t u = 0; u < nearest; ++u)
+        if(positions[u] != i && t < k)
+          neighbors[i * k + t++] = std::uint32_t(positions[u]);
+      scales[i] = offset_scale(scratch.neighborhood, nearest, i, normals[i], scratch.work);
+      // The sheets are those of the neighbors whose normals are parallel to
+      // the point's: a perpendicular face (the rim of a plate, the other
+      // side of a sharp edge) is no sheet.
+      counts[i] = 0;
+      for(std::size_t u = 0; u < (std::min)(positions.size(), row); ++u)
+        if(std::abs(normals[i].dot(normals[positions[u]])) > cos_parallel)
+          offsets[i * row + counts[i]++] = normals[i].dot(scratch.neighborhood.points[u]);
       scratch.work.assign(offsets.begin() + std::ptrdiff_t(i * row), offsets.begin() + std::ptrdiff_t(i * row + counts[i]));
       spreads[i] = Sheets::spread_within_sheets(scratch.work);
-      areas[i] = CGAL_PI * scratch.neighborhood.radius * scratch.neighborhood.radius / double(positions.size());
+      radii[i] = scratch.neighborhood.radius;
+      const double radius = scratch.neighborhood.points[nearest - 1].norm();
+      areas[i] = CGAL_PI * radius * radius / double(nearest);
     }
   });
-  // The noise across a sheet, over the cloud.
-  std::vector<double> spread_order(spreads);
-  std::nth_element(spread_order.begin(), spread_order.begin() + std::ptrdiff_t(size / 2), spread_order.end());
-  const double noise = spread_order[size / 2];
+  // The noise across a sheet, over the cloud; on clean flat sheets, at
+  // least a thousandth of the neighborhoods' size, so that the rounding
+  // errors of their offsets are not taken for sheets.
+  auto median = [size](std::vector<double> values) {
+    std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(size / 2), values.end());
+    return values[size / 2];
+  };
+  const double noise = (std::max)(median(spreads), 1e-3 * median(radii));
   std::vector<Sheets> sheets(size);
   for_each_block<ConcurrencyTag>(size, no_progress, [] { return std::vector<double>(); },
                                  [&](std::size_t begin, std::size_t end, std::vector<double>& work) {
