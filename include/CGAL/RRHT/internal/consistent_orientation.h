@@ -21,18 +21,37 @@ namespace CGAL {
 namespace RRHT {
 namespace internal {
 
-/// The sign, +1 or -1, by which each unit normal of `normals` (in the order
+/// +1 or -1: the sign that turns `normal` to the one of its two senses whose
+/// largest coordinate in absolute value (the first of equal ones) is
+/// positive.
+inline int canonical_sign(const Eigen::Vector3d& normal)
+{
+  Eigen::Index largest = 0;
+  normal.cwiseAbs().maxCoeff(&largest);
+  return normal[largest] < 0 ? -1 : 1;
+}
+
+/// The sign, +1 or -1, by which each unit normal of `given` (in the order
 /// of `search`) is to be multiplied: the signed edges of the graph of the
 /// `k` nearest neighbors (`orientation_edges()`) join the points into
 /// consistently oriented clusters (`signed_clusters()`), and each
-/// cluster is turned out of the solid (`outward_signs()`).
+/// cluster is turned out of the solid (`outward_signs()`). The normals are
+/// first turned to a sense that depends on their lines only, so that the
+/// result does not depend on the senses given, to the last bit.
 template <typename ConcurrencyTag>
-std::vector<int> consistent_orientation(const Neighbor_search& search, const std::vector<Eigen::Vector3d>& normals,
+std::vector<int> consistent_orientation(const Neighbor_search& search, const std::vector<Eigen::Vector3d>& given,
                                         unsigned int k)
 {
   const std::size_t size = search.size();
   if(size < 2)
     return std::vector<int>(size, 1);
+  std::vector<int> canonical(size);
+  std::vector<Eigen::Vector3d> normals(size);
+  for(std::size_t v = 0; v < size; ++v)
+  {
+    canonical[v] = canonical_sign(given[v]);
+    normals[v] = double(canonical[v]) * given[v];
+  }
   std::vector<double> areas;
   // Blocks of 8192 points along the search's Hilbert order: large enough
   // that the clusters are nearly those of one agglomeration of the whole
@@ -52,7 +71,7 @@ std::vector<int> consistent_orientation(const Neighbor_search& search, const std
   const std::vector<int> outward = outward_signs(members, points, normals, signs, areas);
   for(std::size_t c = 0; c < members.size(); ++c)
     for(std::uint32_t v : members[c])
-      signs[v] *= outward[c];
+      signs[v] *= outward[c] * canonical[v];
   return signs;
 }
 
