@@ -562,10 +562,12 @@ def orientation_report(rows, out):
         if os.path.exists(floor_path):
             with open(floor_path, newline="") as f:
                 for r in csv.DictReader(f):
+                    floor = float(r["floor_percent"])
                     md.append("\nThe floor on %s with %s%% noise: %.3f%% of its points lie nearer the surface on the "
                               "other side of their wall than their own; no orientation from the points alone can "
-                              "tell their side, and the target of 0.1 is out of reach there.\n"
-                              % (r["cloud"], r["noise_percent"], float(r["floor_percent"])))
+                              "tell their side%s.\n"
+                              % (r["cloud"], r["noise_percent"], floor,
+                                 ", and the target of 0.1 is out of reach there" if floor > 0.1 else ""))
         met = [r for r in closed if r["pipeline"] == pipelines[0] and r["met"] == "yes"]
         md.append("\n%s meets the target on %d of %d closed clouds.\n" % (
             pipelines[0], len(met), sum(1 for r in closed if r["pipeline"] == pipelines[0])))
