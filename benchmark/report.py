@@ -536,6 +536,26 @@ def orientation_wide(rows, pipelines, value, title):
     return lines
 
 
+def orientation_floors(out, kind, target):
+    """The sentences of orientation_floor.csv on the clouds of `kind`: the
+    share of the points nearer the other side of a thin part than their own,
+    a floor for the share of wrong orientations, against the `target`."""
+    path = os.path.join(out, "orientation_floor.csv")
+    if not os.path.exists(path):
+        return []
+    md = []
+    with open(path, newline="") as f:
+        for r in csv.DictReader(f):
+            if r.get("kind", "closed") != kind:
+                continue
+            floor = float(r["floor_percent"])
+            md.append("\nThe floor on %s with %s%% noise: %.3f%% of its points lie nearer the other side of a thin "
+                      "part than their own; no orientation from the points alone can tell their side%s.\n"
+                      % (r["cloud"], r["noise_percent"], floor,
+                         ", and the target of %g is out of reach there" % target if floor > target else ""))
+    return md
+
+
 def orientation_report(rows, out):
     """orientation.md: the quality tables of orientation_quality.csv, the time
     against the number of points of orientation.csv (plot), and the targets."""
@@ -558,16 +578,7 @@ def orientation_report(rows, out):
         md += orientation_wide(closed, pipelines, lambda r: "%.3f" % float(r["up_to_flip_percent"]),
                                "### Closed shapes: up to a global flip (the minority side, within 60°): 0 where the "
                                "normals are consistent, pointing out or all in")
-        floor_path = os.path.join(out, "orientation_floor.csv")
-        if os.path.exists(floor_path):
-            with open(floor_path, newline="") as f:
-                for r in csv.DictReader(f):
-                    floor = float(r["floor_percent"])
-                    md.append("\nThe floor on %s with %s%% noise: %.3f%% of its points lie nearer the surface on the "
-                              "other side of their wall than their own; no orientation from the points alone can "
-                              "tell their side%s.\n"
-                              % (r["cloud"], r["noise_percent"], floor,
-                                 ", and the target of 0.1 is out of reach there" if floor > 0.1 else ""))
+        md += orientation_floors(out, "closed", 0.1)
         met = [r for r in closed if r["pipeline"] == pipelines[0] and r["met"] == "yes"]
         md.append("\n%s meets the target on %d of %d closed clouds.\n" % (
             pipelines[0], len(met), sum(1 for r in closed if r["pipeline"] == pipelines[0])))
@@ -577,6 +588,7 @@ def orientation_report(rows, out):
                                lambda r: "%.3f (%.1f%%)" % (float(r["wrong_percent"]), float(r["counted_percent"])),
                                "### Open shapes: % of the normals on the minority side, among those within 60° of "
                                "the exact normal's line (in brackets: their share). Target ≤ 1")
+        md += orientation_floors(out, "open", 1)
         md += orientation_wide(opened, pipelines, lambda r: "%.3f" % float(r["wrong_all_percent"]),
                                "### Open shapes: the same over all points")
     scans = [r for r in quality if r["kind"] == "scan"]

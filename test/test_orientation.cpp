@@ -136,6 +136,25 @@ TEST_CASE("Consistent orientation of a noisy hollow box: walls 5 noise deviation
   CHECK(share_outward(cloud, end) >= 0.98);
 }
 
+TEST_CASE("Signed clusters: a point at a block's edge is joined by all its evidence", "[orientation]")
+{
+  // Blocks of 4 vertices, all agreeing. Vertex 4 begins the second block:
+  // its strong evidence is with the first block, its only edge within its
+  // own block is weak and wrong. Joined within its block first, it would
+  // carry the second block along, flipped.
+  using CGAL::RRHT::internal::Signed_edge;
+  const std::vector<Signed_edge> edges = { { 0, 1, 1. }, { 1, 2, 1. }, { 2, 3, 1. }, { 5, 6, 1. }, { 6, 7, 1. },
+                                           { 4, 5, -0.1 }, { 1, 4, 1. }, { 2, 4, 1. }, { 3, 4, 1. }, { 3, 5, 1. } };
+  const CGAL::RRHT::internal::Signed_clusters clusters =
+    CGAL::RRHT::internal::signed_clusters<CGAL::Sequential_tag>(8, edges, 4);
+  for(std::size_t v = 0; v < 8; ++v)
+  {
+    INFO("vertex " << v);
+    CHECK(clusters.cluster[v] == clusters.cluster[0]);
+    CHECK(clusters.sign[v] == clusters.sign[0]);
+  }
+}
+
 TEST_CASE("Consistent orientation of a thin open blade: its two sides point away from each other", "[orientation]")
 {
   // 4% of its chord thick: at 20k points, the sides are 4 neighbor spacings
@@ -178,6 +197,30 @@ TEST_CASE("Consistent orientation: the same normals for any number of threads", 
   for(std::size_t i = 0; i < cloud.size(); ++i)
     flipped += (sequential[i].normal != cloud[i].normal);
   CHECK(flipped > 0);
+}
+
+TEST_CASE("Consistent orientation: only the normals' lines count, not the senses given", "[orientation]")
+{
+  // Thin walls under noise: the sheets' offsets are mirrored when a normal
+  // is flipped, the case where rounding could tell the senses apart.
+  Cloud cloud = hollow_box(20000, 0.01 * 2 * std::sqrt(3.), 12);
+  add_noise(cloud, 0.2, 13);
+  CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(
+    cloud, 60, CGAL::RRHT::parameters::point_map(Point_of_sample()).normal_map(Normal_of_sample())
+                 .number_of_planes(300).number_of_rotations(2));
+  Cloud as_estimated = cloud, all_flipped = cloud, some_flipped = cloud;
+  for(std::size_t i = 0; i < cloud.size(); ++i)
+  {
+    all_flipped[i].normal = -all_flipped[i].normal;
+    if(i % 3 == 0)
+      some_flipped[i].normal = -some_flipped[i].normal;
+  }
+  for(Cloud* c : { &as_estimated, &all_flipped, &some_flipped })
+    CGAL::rrht_orient_normals<CGAL::Parallel_if_available_tag>(*c, 18, maps);
+  std::size_t differ = 0;
+  for(std::size_t i = 0; i < cloud.size(); ++i)
+    differ += (all_flipped[i].normal != as_estimated[i].normal) + (some_flipped[i].normal != as_estimated[i].normal);
+  CHECK(differ == 0);
 }
 
 TEST_CASE("Orientation towards a direction and a viewpoint", "[orientation]")

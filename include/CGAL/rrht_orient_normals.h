@@ -51,19 +51,25 @@ namespace CGAL {
    clusters on the graph of their `k` nearest neighbors, whose edges say
    whether their two normals agree. Nearly parallel normals agree by the
    sign of their dot product where each point lies on the other's tangent
-   plane (as in `CGAL::mst_orient_normals()`); the pairs on two parallel
-   sheets, such as the sides of a thin part, give no evidence. Across a sharp
-   edge, where that dot product is noise, they agree by the sign of the dot
-   product of one normal with the other reflected through the plane that
-   bisects them (the reflection criterion of Xie et al. 2003). Clusters are
-   joined by the sum of the evidence between them, strongest first, so that
-   a few wrong edges are outvoted. Each cluster is then turned so that the
-   flux of the position through it is positive (outward on a closed
-   surface), and flipped where it lies within an odd number of others (the
-   walls of a cavity, whose outside is the cavity), by the winding number of
-   their oriented points. An open surface ends up oriented to one side.
-   Clusters with no evidence between them, such as separate objects, are each
-   oriented so. See the user manual for the choice and its measures.
+   plane (as in `CGAL::mst_orient_normals()`). Where a neighborhood holds
+   several parallel sheets, the sides of a thin part or of a narrow gap told
+   apart by the offsets of the points along the normal, a pair agrees only
+   when each point is on the other's sheet, and is opposite when each is on
+   the sheet next to the other's, across the chord; other pairs give no
+   evidence. Across a sharp edge, where that dot product is noise, they
+   agree by the sign of the dot product of one normal with the other
+   reflected through the plane that bisects them (the reflection criterion
+   of Xie et al. 2003). Clusters are joined by the sum of the evidence
+   between them, strongest first, so that a few wrong edges are outvoted.
+   Each cluster is then turned so that the flux of the position through it
+   is positive (outward on a closed surface), and flipped where it lies
+   within an odd number of others (the walls of a cavity, whose outside is
+   the cavity), by the winding number of their oriented points. An open
+   surface ends up oriented to one side. Clusters with no evidence between
+   them, such as separate objects, are each oriented so. Only the lines of
+   the given normals count: flipping any of them before the call changes
+   nothing in the result. See the user manual for the choice and its
+   measures.
 
    Points with a non-finite coordinate and points whose normal is null or has
    a non-finite coordinate are not oriented; neither are points whose

@@ -42,19 +42,25 @@ namespace internal {
 /// neighbors reach across (the walls of a cavity and the outside, close
 /// objects), which the signs out of the solid (`outward_signs()`) orient
 /// better one by one than a few edges together. Each vertex stands for
-/// `points[v]` points (1 each if `points` is empty). Ties are broken by the
+/// `points[v]` points (1 each if `points` is empty). Where the graph is part
+/// of a larger one, `outside[v]` is the sum of the absolute weights of the
+/// edges from `v` to vertices out of it (none if `outside` is empty): two
+/// clusters whose sum is under the evidence either has outside stay apart,
+/// since that evidence could outvote their join. Ties are broken by the
 /// vertices' numbers: the result depends only on the edges and their order.
 class Signed_agglomeration
 {
 public:
   Signed_agglomeration(std::size_t size, const std::vector<Signed_edge>& edges,
                        const std::vector<std::size_t>& points = std::vector<std::size_t>(),
-                       std::size_t large = std::size_t(-1))
+                       std::size_t large = std::size_t(-1), std::vector<double> outside = std::vector<double>())
   {
     // The number of points of each cluster.
     std::vector<std::size_t> weight(points);
     if(weight.empty())
       weight.assign(size, 1);
+    if(outside.empty())
+      outside.assign(size, 0.);
     // A forest of the joins: each cluster's parent and its sign relative to
     // the parent.
     std::vector<std::uint32_t> parent(size);
@@ -89,6 +95,8 @@ public:
       if(weight[best.a] >= large && weight[best.b] >= large &&
          std::abs(best.sum) < min_share * double((std::min)(weight[best.a], weight[best.b])))
         continue;
+      if(std::abs(best.sum) < (std::min)(outside[best.a], outside[best.b]))
+        continue;
       // The cluster with fewer neighbors joins the other.
       std::uint32_t kept = best.a, joined = best.b;
       if(adjacency[joined].size() > adjacency[kept].size())
@@ -96,6 +104,7 @@ public:
       const double flip = best.sum < 0 ? -1. : 1.;
       parent[joined] = kept;
       weight[kept] += weight[joined];
+      outside[kept] += outside[joined];
       sign_to_parent[joined] = static_cast<signed char>(flip);
       adjacency[kept].erase(joined);
       for(const auto& neighbor : adjacency[joined])
@@ -181,11 +190,17 @@ Signed_clusters signed_clusters(std::size_t size, const std::vector<Signed_edge>
   const std::size_t large = (std::max<std::size_t>)(100, size / 1000);
   const std::size_t blocks = (size + block - 1) / block;
   std::vector<std::vector<Signed_edge> > within(blocks);
+  std::vector<double> outside(size, 0.);
   for(const Signed_edge& e : edges)
     if(e.a / block == e.b / block)
     {
       const std::uint32_t first = std::uint32_t(e.a / block * block);
       within[e.a / block].push_back({ e.a - first, e.b - first, e.weight });
+    }
+    else
+    {
+      outside[e.a] += std::abs(e.weight);
+      outside[e.b] += std::abs(e.weight);
     }
   Signed_clusters result;
   result.cluster.resize(size);
@@ -194,7 +209,9 @@ Signed_clusters signed_clusters(std::size_t size, const std::vector<Signed_edge>
   std::iota(block_numbers.begin(), block_numbers.end(), std::size_t(0));
   CGAL::for_each<ConcurrencyTag>(block_numbers, [&](std::size_t b) {
     const std::size_t first = b * block, count = (std::min)(size, first + block) - first;
-    const Signed_agglomeration local(count, within[b], std::vector<std::size_t>(), large);
+    const Signed_agglomeration local(count, within[b], std::vector<std::size_t>(), large,
+                                     std::vector<double>(outside.begin() + std::ptrdiff_t(first),
+                                                         outside.begin() + std::ptrdiff_t(first + count)));
     for(std::size_t v = 0; v < count; ++v)
     {
       result.cluster[first + v] = std::uint32_t(first + local.cluster(v));

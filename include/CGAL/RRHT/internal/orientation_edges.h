@@ -61,7 +61,8 @@ constexpr double cos_parallel = 0.8660254037844386;
 
 /// The signed weight of the edge from a point with unit normal `ni` to a
 /// neighbor at `d` from it with unit normal `nj`, their offset scales `si`
-/// and `sj` and the sheets of their neighborhoods `hi` and `hj`.
+/// and `sj`, and the sheets of their neighborhoods `hi` and `hj`, told apart
+/// along the unit axes `ai` and `aj`.
 ///
 /// - Nearly parallel normals (within 30 degrees) are on one smooth sheet when
 ///   each point lies within the noise of the other's tangent plane (with
@@ -79,7 +80,8 @@ constexpr double cos_parallel = 0.8660254037844386;
 ///   reflection criterion of Xie et al. 2003, after König and Gumhold 2009),
 ///   and it is confident across a 90 degree edge.
 inline double signed_weight(const Eigen::Vector3d& d, const Eigen::Vector3d& ni, const Eigen::Vector3d& nj, double si,
-                            double sj, const Sheets& hi, const Sheets& hj)
+                            double sj, const Sheets& hi, const Sheets& hj, const Eigen::Vector3d& ai,
+                            const Eigen::Vector3d& aj)
 {
   const double noise_factor = 7, normal_tolerance = 0.03;
   const double length = d.norm(), c = ni.dot(nj);
@@ -97,7 +99,7 @@ inline double signed_weight(const Eigen::Vector3d& d, const Eigen::Vector3d& ni,
       // Across a thin part the chord runs along the normals; across a step
       // or the rim of a plate, whose near points may take the rim's normal,
       // it is oblique.
-      const int side_i = hi.side(oi), side_j = hj.side(oj);
+      const int side_i = hi.side(ai.dot(d)), side_j = hj.side(-aj.dot(d));
       if(side_i == 1 && side_j == 1 && std::abs(oi) <= band && std::abs(oj) <= band)
         return c;
       return side_i == -1 && side_j == -1 && std::abs(oi) > along && std::abs(oj) > along ? -c : 0.;
@@ -134,6 +136,7 @@ std::vector<Signed_edge> orientation_edges(const Neighbor_search& search, const 
   std::vector<std::uint32_t> neighbors(size * k);
   std::vector<double> scales(size), offsets(size * row), spreads(size), radii(size);
   std::vector<std::size_t> counts(size);
+  std::vector<Eigen::Vector3d> axes(size);
   areas.assign(size, 0.);
   struct Scratch
   {
@@ -160,10 +163,22 @@ std::vector<Signed_edge> orientation_edges(const Neighbor_search& search, const 
       // The sheets are those of the neighbors whose normals are parallel to
       // the point's: a perpendicular face (the rim of a plate, the other
       // side of a sharp edge) is no sheet.
+      // The offsets are taken along the mean line of those normals, the
+      // point's own included: steadier under noise than one normal, whose
+      // tilt would spread each sheet's offsets over the neighborhood.
+      const std::size_t parallel_end = (std::min)(positions.size(), row);
+      Eigen::Vector3d axis = Eigen::Vector3d::Zero();
+      for(std::size_t u = 0; u < parallel_end; ++u)
+      {
+        const double c = normals[i].dot(normals[positions[u]]);
+        if(std::abs(c) > cos_parallel)
+          axis += c < 0 ? Eigen::Vector3d(-normals[positions[u]]) : normals[positions[u]];
+      }
+      axes[i] = axis.squaredNorm() > 0 ? axis.normalized() : normals[i];
       counts[i] = 0;
-      for(std::size_t u = 0; u < (std::min)(positions.size(), row); ++u)
+      for(std::size_t u = 0; u < parallel_end; ++u)
         if(std::abs(normals[i].dot(normals[positions[u]])) > cos_parallel)
-          offsets[i * row + counts[i]++] = normals[i].dot(scratch.neighborhood.points[u]);
+          offsets[i * row + counts[i]++] = axes[i].dot(scratch.neighborhood.points[u]);
       scratch.work.assign(offsets.begin() + std::ptrdiff_t(i * row), offsets.begin() + std::ptrdiff_t(i * row + counts[i]));
       spreads[i] = Sheets::spread_within_sheets(scratch.work);
       radii[i] = scratch.neighborhood.radius;
@@ -203,7 +218,8 @@ std::vector<Signed_edge> orientation_edges(const Neighbor_search& search, const 
           continue;
         const Eigen::Vector3d d = search.point(j) - search.point(i);
         blocks[block].push_back({ std::uint32_t((std::min<std::size_t>)(i, j)), std::uint32_t((std::max<std::size_t>)(i, j)),
-                                  signed_weight(d, normals[i], normals[j], scales[i], scales[j], sheets[i], sheets[j]) });
+                                  signed_weight(d, normals[i], normals[j], scales[i], scales[j], sheets[i], sheets[j],
+                                                axes[i], axes[j]) });
       }
     return true;
   });
