@@ -897,14 +897,12 @@ const double hollow_box_wall = 0.01 * 2 * std::sqrt(3.);
 
 /// The benchmark's thin shapes by name, `n` points: the hollow box, the
 /// finned part (fins and gaps 1% of its diagonal) and the twisted blade 0.04
-/// thick (2% of its chord), their exact normals out of the solid.
+/// thick (2% of its chord); their generators give exact normals out of the
+/// solid.
 Cloud thin_shape(const std::string& name, std::size_t n, unsigned int seed)
 {
-  Cloud cloud = name == "hollow_box" ? hollow_box(n, hollow_box_wall, seed)
-                : name == "finned_part" ? finned_part(n, seed) : thin_blade(n, 0.04, seed);
-  if(name != "thin_blade")
-    truth_outward(cloud, false);
-  return cloud;
+  return name == "hollow_box" ? hollow_box(n, hollow_box_wall, seed)
+         : name == "finned_part" ? finned_part(n, seed) : thin_blade(n, 0.04, seed);
 }
 
 /// The nearest samples of a cloud to a point, by their index in the cloud.

@@ -143,6 +143,7 @@ std::vector<Signed_edge> orientation_edges(const Neighbor_search& search, const 
     Neighborhood neighborhood;
     Neighbor_search::Scratch search;
     std::vector<double> work;
+    std::vector<std::size_t> parallel;
   };
   const std::function<bool(double)> no_callback;
   Progress no_progress(no_callback, size);
@@ -166,19 +167,21 @@ std::vector<Signed_edge> orientation_edges(const Neighbor_search& search, const 
       // The offsets are taken along the mean line of those normals, the
       // point's own included: steadier under noise than one normal, whose
       // tilt would spread each sheet's offsets over the neighborhood.
-      const std::size_t parallel_end = (std::min)(positions.size(), row);
+      scratch.parallel.clear();
       Eigen::Vector3d axis = Eigen::Vector3d::Zero();
-      for(std::size_t u = 0; u < parallel_end; ++u)
+      for(std::size_t u = 0; u < (std::min)(positions.size(), row); ++u)
       {
         const double c = normals[i].dot(normals[positions[u]]);
         if(std::abs(c) > cos_parallel)
+        {
+          scratch.parallel.push_back(u);
           axis += c < 0 ? Eigen::Vector3d(-normals[positions[u]]) : normals[positions[u]];
+        }
       }
       axes[i] = axis.squaredNorm() > 0 ? axis.normalized() : normals[i];
-      counts[i] = 0;
-      for(std::size_t u = 0; u < parallel_end; ++u)
-        if(std::abs(normals[i].dot(normals[positions[u]])) > cos_parallel)
-          offsets[i * row + counts[i]++] = axes[i].dot(scratch.neighborhood.points[u]);
+      counts[i] = scratch.parallel.size();
+      for(std::size_t t = 0; t < counts[i]; ++t)
+        offsets[i * row + t] = axes[i].dot(scratch.neighborhood.points[scratch.parallel[t]]);
       scratch.work.assign(offsets.begin() + std::ptrdiff_t(i * row), offsets.begin() + std::ptrdiff_t(i * row + counts[i]));
       spreads[i] = Sheets::spread_within_sheets(scratch.work);
       radii[i] = scratch.neighborhood.radius;
