@@ -155,6 +155,20 @@ inline Estimator rrht_adaptive(const Neighborhood& n)
   return e;
 }
 
+/// The adaptive setting with the least-squares refit
+/// (`adaptive(true).refit(true)`): "RRHT_adaptive_refit".
+inline Estimator rrht_adaptive_refit(const Neighborhood& n)
+{
+  Estimator e;
+  e.name = "RRHT_adaptive_refit";
+  e.rotations = 5;
+  e.estimate = [n](Cloud& cloud, unsigned int) {
+    CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(
+      cloud, n.k, sample_maps().neighbor_radius(n.radius).adaptive(true).refit(true));
+  };
+  return e;
+}
+
 /// `rrht_defaults()` that also writes each point's confidence
 /// (`confidence_map`): "RRHT_defaults_K100_confidence".
 inline Estimator rrht_defaults_with_confidence(const Neighborhood& n)

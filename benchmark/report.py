@@ -122,6 +122,7 @@ TITLES = {
     "scaling": "Time against the number of points at the fast setting (sphere, 0.2% noise)",
     "adaptive": "The adaptive setting against the precise setting and RRHT_Cubes (100k points, 0.2% noise, 2 threads)",
     "refit": "The least-squares refit (refit=True) on smooth, sharp and thin clouds (100k points, 2 threads)",
+    "fillets": "Fillets: every RRHT setting against jet fitting on rounded edges (100k points, 2 threads)",
     "confidence": "Confidence per point (confidence_map): does it predict the error? (100k points, 0.2% noise)",
     "orientation": "Orienting the normals: rrht_orient_normals against mst_orient_normals (and Open3D)",
 }

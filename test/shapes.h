@@ -371,6 +371,199 @@ inline Cloud thin_blade(std::size_t n, double t, unsigned int seed)
   });
 }
 
+/// The box [-1,1]^3 with every edge and corner rounded to radius r
+/// (0 <= r < 1): the points at distance r from the box [r-1, 1-r]^3,
+/// uniformly over the area. Its faces meet the fillets (quarter cylinders)
+/// and the corners (eighths of a sphere) tangentially: no sharp edge.
+inline Cloud rounded_box(std::size_t n, double r, unsigned int seed)
+{
+  const double h = 1 - r; // the inner box's half-side
+  const double faces = 24 * h * h, fillets = 12 * 2 * h * pi * r / 2, corners = 4 * pi * r * r;
+  std::normal_distribution<double> g(0, 1);
+  return generate(n, seed, [&](std::mt19937& rng, std::uniform_real_distribution<double>& u, Sample& s) {
+    // A point c of the inner box and the unit normal t; the point is c + r t.
+    double c[3] = { h * (2 * u(rng) - 1), h * (2 * u(rng) - 1), h * (2 * u(rng) - 1) }, t[3] = { 0, 0, 0 };
+    const double piece = u(rng) * (faces + fillets + corners);
+    const int axis = (std::min)(2, int(3 * u(rng)));
+    auto sign = [&] { return u(rng) < 0.5 ? -1. : 1.; };
+    if(piece < faces)
+    {
+      t[axis] = sign();
+      c[axis] = t[axis] * h;
+    }
+    else if(piece < faces + fillets) // a fillet along `axis`
+    {
+      const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+      const double angle = u(rng) * pi / 2, sa = sign(), sb = sign();
+      c[a] = sa * h;
+      c[b] = sb * h;
+      t[a] = sa * std::cos(angle);
+      t[b] = sb * std::sin(angle);
+    }
+    else // a corner: a uniform direction of its octant
+    {
+      double length = 0;
+      for(double& x : t)
+      {
+        x = g(rng);
+        length += x * x;
+      }
+      for(int d = 0; d < 3; ++d)
+      {
+        t[d] /= std::sqrt(length);
+        c[d] = (t[d] < 0 ? -h : h);
+      }
+    }
+    s.point = Point(c[0] + r * t[0], c[1] + r * t[1], c[2] + r * t[2]);
+    s.truth = Vector(t[0], t[1], t[2]);
+  });
+}
+
+/// A plane curve of segments and circular arcs, each tangent to the next,
+/// by its arc length: the profile of an extruded part.
+class Profile
+{
+public:
+  /// Starts at (`x`, `y`), heading at `angle` (radians) from the x axis.
+  Profile(double x, double y, double angle) : m_x(x), m_y(y), m_angle(angle) {}
+
+  /// A segment of `length` straight ahead.
+  Profile& line(double length) { return add(length, 0.); }
+
+  /// An arc of `radius` that turns by `angle` (radians; positive: to the
+  /// left).
+  Profile& arc(double radius, double angle) { return add(radius * std::abs(angle), angle > 0 ? 1 / radius : -1 / radius); }
+
+  double length() const { return m_total; }
+
+  /// The largest curvature, in absolute value.
+  double max_curvature() const
+  {
+    double largest = 0;
+    for(const Piece& p : m_pieces)
+      largest = (std::max)(largest, std::abs(p.curvature));
+    return largest;
+  }
+
+  /// At arc length `s`: the position (`x`, `y`), the heading `angle` (the
+  /// unit tangent is (cos, sin), the left normal (-sin, cos)) and the signed
+  /// `curvature` (positive where the curve turns left).
+  void at(double s, double& x, double& y, double& angle, double& curvature) const
+  {
+    std::size_t i = 0;
+    while(i + 1 < m_pieces.size() && s > m_pieces[i].start + m_pieces[i].length)
+      ++i;
+    const Piece& p = m_pieces[i];
+    const double d = (std::min)((std::max)(0., s - p.start), p.length);
+    curvature = p.curvature;
+    angle = p.angle + p.curvature * d;
+    if(p.curvature == 0)
+    {
+      x = p.x + d * std::cos(p.angle);
+      y = p.y + d * std::sin(p.angle);
+    }
+    else
+    {
+      // The centre is 1 / curvature to the left of the start.
+      const double r = 1 / p.curvature;
+      x = p.x + r * (std::sin(angle) - std::sin(p.angle));
+      y = p.y - r * (std::cos(angle) - std::cos(p.angle));
+    }
+  }
+
+private:
+  struct Piece
+  {
+    double start, length, curvature, x, y, angle;
+  };
+
+  Profile& add(double length, double curvature)
+  {
+    m_pieces.push_back(Piece{ m_total, length, curvature, m_x, m_y, m_angle });
+    m_total += length;
+    double angle, k;
+    at(m_total, m_x, m_y, angle, k);
+    m_angle = angle;
+    return *this;
+  }
+
+  std::vector<Piece> m_pieces;
+  double m_x, m_y, m_angle, m_total = 0;
+};
+
+/// A bent plate of thickness t, closed: its mid-surface is a Z-shaped
+/// profile of the plane xy (three flat parts, 0.7, 0.5 and 0.7 long, joined
+/// by two 90 degree bends whose inner fillet radius is r > 0) extruded along
+/// z in [-1,1]; the two sides, the ends and the two caps z = +-1 are
+/// sampled uniformly over the area. The bends' fillets meet the flat parts
+/// tangentially; the caps and ends have sharp edges.
+inline Cloud filleted_plate(std::size_t n, double t, double r, unsigned int seed)
+{
+  const double radius = r + t / 2; // of the mid-surface's bends
+  const Profile profile = Profile(-0.7 - radius, -0.25 - radius, 0)
+                            .line(0.7).arc(radius, pi / 2).line(0.5).arc(radius, -pi / 2).line(0.7);
+  const double length = profile.length(), sides = 2 * 2 * length, caps = 2 * length * t, ends = 2 * 2 * t;
+  const double bound = 1 + profile.max_curvature() * t / 2;
+  return generate(n, seed, [=](std::mt19937& rng, std::uniform_real_distribution<double>& u, Sample& s) {
+    const double piece = u(rng) * (sides + caps + ends);
+    double x, y, angle, curvature, along, w; // the point at offset w along the mid-surface's left normal
+    if(piece < sides + caps)
+      do // the area element (1 - curvature w) ds dz
+      {
+        along = u(rng) * length;
+        w = piece < sides ? (u(rng) < 0.5 ? -t / 2 : t / 2) : (u(rng) - 0.5) * t;
+        profile.at(along, x, y, angle, curvature);
+      } while(u(rng) * bound > 1 - curvature * w);
+    else
+    {
+      along = u(rng) < 0.5 ? 0. : length;
+      w = (u(rng) - 0.5) * t;
+      profile.at(along, x, y, angle, curvature);
+    }
+    const double nx = -std::sin(angle), ny = std::cos(angle), z = 2 * u(rng) - 1;
+    s.point = Point(x + w * nx, y + w * ny, piece < sides + caps && piece >= sides ? (u(rng) < 0.5 ? -1. : 1.) : z);
+    if(piece < sides)
+      s.truth = w > 0 ? Vector(nx, ny, 0) : Vector(-nx, -ny, 0);
+    else if(piece < sides + caps)
+      s.truth = Vector(0, 0, s.point.z());
+    else
+      s.truth = along > 0 ? Vector(std::cos(angle), std::sin(angle), 0) : Vector(-std::cos(angle), -std::sin(angle), 0);
+  });
+}
+
+/// A slab with both fillets and sharp edges: the square [-1,1]^2 with its
+/// corners rounded to radius r (0 <= r <= 1), extruded along z in
+/// [-0.5, 0.5], uniformly over the area. Its four vertical edges are
+/// fillets; the edges of its top and bottom faces are sharp (90 degrees).
+inline Cloud rounded_slab(std::size_t n, double r, unsigned int seed)
+{
+  const double h = 1 - r;
+  const Profile profile = Profile(-h, -1, 0)
+                            .line(2 * h).arc(r, pi / 2).line(2 * h).arc(r, pi / 2)
+                            .line(2 * h).arc(r, pi / 2).line(2 * h).arc(r, pi / 2);
+  const double side = profile.length(), caps = 2 * (4 - (4 - pi) * r * r);
+  return generate(n, seed, [=](std::mt19937& rng, std::uniform_real_distribution<double>& u, Sample& s) {
+    if(u(rng) * (side + caps) < side)
+    {
+      double x, y, angle, curvature;
+      profile.at(u(rng) * side, x, y, angle, curvature);
+      s.point = Point(x, y, u(rng) - 0.5);
+      s.truth = Vector(std::sin(angle), -std::cos(angle), 0); // counterclockwise: out is to the right
+      return;
+    }
+    double x, y;
+    do // uniformly in the rounded square
+    {
+      x = 2 * u(rng) - 1;
+      y = 2 * u(rng) - 1;
+    } while(std::abs(x) > h && std::abs(y) > h &&
+            (std::abs(x) - h) * (std::abs(x) - h) + (std::abs(y) - h) * (std::abs(y) - h) > r * r);
+    const double z = u(rng) < 0.5 ? -0.5 : 0.5;
+    s.point = Point(x, y, z);
+    s.truth = Vector(0, 0, z > 0 ? 1 : -1);
+  });
+}
+
 /// `n` points drawn uniformly over the area of a polygon mesh (faces
 /// fan-triangulated); the normal of the triangle a point is on is its truth.
 /// Returns false if the file cannot be read or has no area.

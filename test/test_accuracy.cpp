@@ -319,3 +319,92 @@ TEST_CASE("Refit: sharp edges are kept (cube, corner)", "[accuracy][refit]")
     CHECK(e.refit.rms <= e.plain.rms);
   }
 }
+
+namespace {
+
+/// A filleted shape of test/shapes.h with its area and volume, worked out
+/// apart from its generator.
+struct Filleted
+{
+  const char* name;
+  Cloud cloud;
+  double area, volume;
+};
+
+std::vector<Filleted> filleted_shapes(std::size_t n)
+{
+  const double r = 0.2, h = 1 - r, t = 0.05, bend = r + t / 2;
+  const double plate_length = 2 * 0.7 + 0.5 + 2 * bend * pi / 2;
+  return { { "rounded box", rounded_box(n, r, 1),
+             24 * h * h + 12 * 2 * h * pi * r / 2 + 4 * pi * r * r,
+             8 * h * h * h + 6 * 4 * h * h * r + 12 * 2 * h * pi * r * r / 4 + 4 * pi * r * r * r / 3 },
+           { "filleted plate", filleted_plate(n, t, r, 2), 4 * plate_length + 2 * plate_length * t + 4 * t,
+             2 * plate_length * t },
+           { "rounded slab", rounded_slab(n, r, 3), 8 * h + 2 * pi * r + 2 * (4 - (4 - pi) * r * r),
+             4 - (4 - pi) * r * r } };
+}
+
+/// The angle errors, in degrees, of the samples whose exact normal is along
+/// no axis: those on the fillets.
+std::vector<double> fillet_errors(const Cloud& cloud)
+{
+  std::vector<double> angles;
+  for(const Sample& s : cloud)
+    if((std::max)({ std::abs(s.truth.x()), std::abs(s.truth.y()), std::abs(s.truth.z()) }) < 0.99)
+      angles.push_back(angle_error(s));
+  std::sort(angles.begin(), angles.end());
+  return angles;
+}
+
+} // namespace
+
+TEST_CASE("Filleted shapes: unit normals out of the solid, uniform over the area", "[accuracy][fillets]")
+{
+  for(const Filleted& shape : filleted_shapes(400000))
+  {
+    INFO(shape.name);
+    // The divergence theorem: the flux of the position through the surface is 3 times the volume; each sample
+    // stands for area / n of it. Checked within 4 standard errors of the mean, which must be small enough for
+    // the check to mean something (the two sides of the thin plate nearly cancel).
+    double sum = 0, sum2 = 0;
+    bool unit = true;
+    for(const Sample& s : shape.cloud)
+    {
+      unit = unit && std::abs(s.truth.squared_length() - 1) < 1e-12;
+      const double term = s.truth * (s.point - CGAL::ORIGIN);
+      sum += term;
+      sum2 += term * term;
+    }
+    const double n = double(shape.cloud.size()), mean = sum / n;
+    const double flux = shape.area * mean, error = shape.area * std::sqrt((sum2 / n - mean * mean) / n);
+    INFO("flux " << flux << ", 3 times the volume " << 3 * shape.volume << ", standard error " << error);
+    CHECK(unit);
+    CHECK(error < 0.01 * 3 * shape.volume);
+    CHECK(std::abs(flux - 3 * shape.volume) < 4 * error);
+  }
+  // The rounded box is the set of points at distance r from the inner box, along the normal.
+  const Cloud box = rounded_box(20000, 0.2, 4);
+  double worst = 0;
+  for(const Sample& s : box)
+  {
+    const double p[3] = { s.point.x(), s.point.y(), s.point.z() }, n[3] = { s.truth.x(), s.truth.y(), s.truth.z() };
+    for(int d = 0; d < 3; ++d)
+      worst = (std::max)(worst, std::abs(p[d] - 0.2 * n[d] - (std::max)(-0.8, (std::min)(0.8, p[d]))));
+  }
+  CHECK(worst < 1e-12);
+}
+
+TEST_CASE("Filleted shapes: jet fitting with small neighborhoods agrees with the exact normals on the fillets",
+          "[accuracy][fillets]")
+{
+  for(Filleted& shape : filleted_shapes(50000))
+  {
+    CGAL::jet_estimate_normals<CGAL::Parallel_if_available_tag>(shape.cloud, 18, maps);
+    const std::vector<double> angles = fillet_errors(shape.cloud);
+    INFO(shape.name << ": " << angles.size() << " samples on the fillets, median " << angles[angles.size() / 2]
+                    << " degrees, 90th percentile " << angles[angles.size() * 9 / 10]);
+    CHECK(angles.size() > 1000);
+    CHECK(angles[angles.size() / 2] < 0.5);
+    CHECK(angles[angles.size() * 9 / 10] < 2);
+  }
+}
