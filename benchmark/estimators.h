@@ -115,58 +115,39 @@ inline Estimator rrht(const Rrht_setting& s, const Neighborhood& n)
 }
 
 /// RRHT with the defaults of `CGAL::rrht_estimate_normals()` (T_R from eq. 7:
-/// 691, n_rot = 5), named with its neighborhood: "RRHT_defaults_K18".
-inline Estimator rrht_defaults(const Neighborhood& n)
+/// 691, n_rot = 5) and the options `adaptive` and `refit` (both false by
+/// default), named `name`.
+inline Estimator rrht_with_options(const std::string& name, const Neighborhood& n, bool adaptive, bool refit)
 {
   Estimator e;
-  e.name = "RRHT_defaults" + n.suffix();
+  e.name = name;
   e.rotations = 5;
-  e.estimate = [n](Cloud& cloud, unsigned int) {
-    CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(cloud, n.k, sample_maps().neighbor_radius(n.radius));
+  e.estimate = [n, adaptive, refit](Cloud& cloud, unsigned int) {
+    CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(
+      cloud, n.k, sample_maps().neighbor_radius(n.radius).adaptive(adaptive).refit(refit));
   };
   return e;
+}
+
+/// The defaults, named with their neighborhood: "RRHT_defaults_K18".
+inline Estimator rrht_defaults(const Neighborhood& n)
+{
+  return rrht_with_options("RRHT_defaults" + n.suffix(), n, false, false);
 }
 
 /// The defaults with the least-squares refit (`refit(true)`):
 /// "RRHT_refit_K100".
-inline Estimator rrht_refit(const Neighborhood& n)
-{
-  Estimator e;
-  e.name = "RRHT_refit" + n.suffix();
-  e.rotations = 5;
-  e.estimate = [n](Cloud& cloud, unsigned int) {
-    CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(cloud, n.k,
-                                                                 sample_maps().neighbor_radius(n.radius).refit(true));
-  };
-  return e;
-}
+inline Estimator rrht_refit(const Neighborhood& n) { return rrht_with_options("RRHT_refit" + n.suffix(), n, false, true); }
 
 /// The adaptive setting (`adaptive(true)`, T_R = 691 and n_rot = 5 for the
 /// points estimated again): "RRHT_adaptive".
-inline Estimator rrht_adaptive(const Neighborhood& n)
-{
-  Estimator e;
-  e.name = "RRHT_adaptive";
-  e.rotations = 5;
-  e.estimate = [n](Cloud& cloud, unsigned int) {
-    CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(cloud, n.k,
-                                                                 sample_maps().neighbor_radius(n.radius).adaptive(true));
-  };
-  return e;
-}
+inline Estimator rrht_adaptive(const Neighborhood& n) { return rrht_with_options("RRHT_adaptive", n, true, false); }
 
 /// The adaptive setting with the least-squares refit
 /// (`adaptive(true).refit(true)`): "RRHT_adaptive_refit".
 inline Estimator rrht_adaptive_refit(const Neighborhood& n)
 {
-  Estimator e;
-  e.name = "RRHT_adaptive_refit";
-  e.rotations = 5;
-  e.estimate = [n](Cloud& cloud, unsigned int) {
-    CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(
-      cloud, n.k, sample_maps().neighbor_radius(n.radius).adaptive(true).refit(true));
-  };
-  return e;
+  return rrht_with_options("RRHT_adaptive_refit", n, true, true);
 }
 
 /// `rrht_defaults()` that also writes each point's confidence

@@ -506,12 +506,13 @@ inline Cloud filleted_plate(std::size_t n, double t, double r, unsigned int seed
   const double bound = 1 + profile.max_curvature() * t / 2;
   return generate(n, seed, [=](std::mt19937& rng, std::uniform_real_distribution<double>& u, Sample& s) {
     const double piece = u(rng) * (sides + caps + ends);
+    const enum { side, cap, end } kind = piece < sides ? side : piece < sides + caps ? cap : end;
     double x, y, angle, curvature, along, w; // the point at offset w along the mid-surface's left normal
-    if(piece < sides + caps)
+    if(kind != end)
       do // the area element (1 - curvature w) ds dz
       {
         along = u(rng) * length;
-        w = piece < sides ? (u(rng) < 0.5 ? -t / 2 : t / 2) : (u(rng) - 0.5) * t;
+        w = kind == side ? (u(rng) < 0.5 ? -t / 2 : t / 2) : (u(rng) - 0.5) * t;
         profile.at(along, x, y, angle, curvature);
       } while(u(rng) * bound > 1 - curvature * w);
     else
@@ -520,12 +521,15 @@ inline Cloud filleted_plate(std::size_t n, double t, double r, unsigned int seed
       w = (u(rng) - 0.5) * t;
       profile.at(along, x, y, angle, curvature);
     }
-    const double nx = -std::sin(angle), ny = std::cos(angle), z = 2 * u(rng) - 1;
-    s.point = Point(x + w * nx, y + w * ny, piece < sides + caps && piece >= sides ? (u(rng) < 0.5 ? -1. : 1.) : z);
-    if(piece < sides)
+    const double nx = -std::sin(angle), ny = std::cos(angle);
+    double z = 2 * u(rng) - 1;
+    if(kind == cap)
+      z = u(rng) < 0.5 ? -1. : 1.;
+    s.point = Point(x + w * nx, y + w * ny, z);
+    if(kind == side)
       s.truth = w > 0 ? Vector(nx, ny, 0) : Vector(-nx, -ny, 0);
-    else if(piece < sides + caps)
-      s.truth = Vector(0, 0, s.point.z());
+    else if(kind == cap)
+      s.truth = Vector(0, 0, z);
     else
       s.truth = along > 0 ? Vector(std::cos(angle), std::sin(angle), 0) : Vector(-std::cos(angle), -std::sin(angle), 0);
   });
