@@ -115,16 +115,18 @@ inline Estimator rrht(const Rrht_setting& s, const Neighborhood& n)
 }
 
 /// RRHT with the defaults of `CGAL::rrht_estimate_normals()` (T_R from eq. 7:
-/// 691, n_rot = 5) and the options `adaptive` and `refit` (both false by
-/// default), named `name`.
-inline Estimator rrht_with_options(const std::string& name, const Neighborhood& n, bool adaptive, bool refit)
+/// 691, n_rot = 5) and the options `adaptive`, `refit` and
+/// `least_squares_first` (all false by default), named `name`.
+inline Estimator rrht_with_options(const std::string& name, const Neighborhood& n, bool adaptive, bool refit,
+                                   bool least_squares_first = false)
 {
   Estimator e;
   e.name = name;
   e.rotations = 5;
-  e.estimate = [n, adaptive, refit](Cloud& cloud, unsigned int) {
+  e.estimate = [n, adaptive, refit, least_squares_first](Cloud& cloud, unsigned int) {
     CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(
-      cloud, n.k, sample_maps().neighbor_radius(n.radius).adaptive(adaptive).refit(refit));
+      cloud, n.k,
+      sample_maps().neighbor_radius(n.radius).adaptive(adaptive).refit(refit).least_squares_first(least_squares_first));
   };
   return e;
 }
@@ -148,6 +150,13 @@ inline Estimator rrht_adaptive(const Neighborhood& n) { return rrht_with_options
 inline Estimator rrht_adaptive_refit(const Neighborhood& n)
 {
   return rrht_with_options("RRHT_adaptive_refit", n, true, true);
+}
+
+/// Least squares first, the adaptive setting where the quadric is rejected
+/// (`least_squares_first(true).adaptive(true)`): "RRHT_least_squares_first_K100".
+inline Estimator rrht_least_squares_first(const Neighborhood& n)
+{
+  return rrht_with_options("RRHT_least_squares_first" + n.suffix(), n, true, false, true);
 }
 
 /// `rrht_defaults()` that also writes each point's confidence

@@ -342,6 +342,9 @@ TEST_CASE("Same seed, same normals, bit for bit, whatever the concurrency and th
   check_setting("adaptive", params::extend(pair_maps<SC>).adaptive(true));
   check_setting("refit", params::extend(pair_maps<SC>).refit(true));
   check_setting("refit with a radius", params::extend(pair_maps<SC>).refit(true).neighbor_radius(0.3));
+  check_setting("least squares first", params::extend(pair_maps<SC>).least_squares_first(true).adaptive(true));
+  check_setting("least squares first with refit and a radius",
+                params::extend(pair_maps<SC>).least_squares_first(true).refit(true).neighbor_radius(0.3));
 }
 #endif
 
@@ -628,6 +631,52 @@ TEST_CASE("Refit: degenerate neighborhoods keep the RRHT result, never NaN; prog
   check_progress([&](const std::function<bool(double)>& callback) { estimate(cube, 30, maps.refit(true).callback(callback)); });
 }
 
+TEST_CASE("Least squares first: degenerate neighborhoods get the Hough transform's result, never NaN; progress ends at 1",
+          "[api][least-squares-first][bad-input]")
+{
+  typedef Point_with_normal<SC> PN;
+  auto estimate = [](Pair_cloud<SC> cloud, unsigned int k, const auto& np) {
+    CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(cloud, k, np);
+    return normals_of<SC>(cloud);
+  };
+  const auto maps = params::extend(pair_maps<SC>);
+  const auto first = maps.least_squares_first(true);
+  const SC::Vector_3 null(CGAL::NULL_VECTOR);
+
+  // Identical and collinear points: no quadric, no plane, the null vector.
+  const Pair_cloud<SC> same(50, PN(SC::Point_3(1, 2, 3), SC::Vector_3(1, 1, 1)));
+  Pair_cloud<SC> line;
+  for(int i = 0; i < 50; ++i)
+    line.emplace_back(SC::Point_3(0.5 * i, 0, 0), SC::Vector_3(1, 1, 1));
+  for(const auto& normal : estimate(same, 10, first))
+    CHECK(normal == null);
+  for(const auto& normal : estimate(line, 10, first.refit(true)))
+    CHECK(normal == null);
+
+  // A noise-free plane, with a NaN point among it: the exact normal from the
+  // quadric, and the null vector at the NaN point.
+  Pair_cloud<SC> plane = to_pairs<SC>(rrht_test::plane(300, 4));
+  plane[5].first = SC::Point_3(std::numeric_limits<double>::quiet_NaN(), 0, 0);
+  const auto fitted = estimate(plane, 20, first);
+  CHECK(!has_nan(fitted));
+  for(std::size_t i = 0; i < fitted.size(); ++i)
+  {
+    if(i == 5)
+      CHECK(fitted[i] == null);
+    else
+      CHECK(std::abs(fitted[i].z()) == Approx(1).margin(1e-12));
+  }
+
+  // At most 6 points, fewer than a quadric needs: the Hough transform everywhere.
+  const Pair_cloud<SC> cube = to_pairs<SC>(noisy_cube(500));
+  CHECK(estimate(cube, 5, first.adaptive(true)) == estimate(cube, 5, maps.adaptive(true)));
+  CHECK(estimate(cube, 5, first) == estimate(cube, 5, maps));
+
+  // Three passes, one progress from 0 to 1.
+  check_progress([&](const std::function<bool(double)>& callback) { estimate(cube, 30, first.callback(callback)); });
+}
+
+
 namespace {
 
 // A point with what the estimation writes, and a stable id.
@@ -703,6 +752,8 @@ TEST_CASE("point_id_map: a part of the cloud gives each point whose support it h
   CHECK(check_part_against_whole(cube, 0.2, with(0, np.neighbor_radius(0.25))) > 0.6);
   CHECK(check_part_against_whole(cube, 0.2, with(30, np.neighbor_radius(0.25))) > 0.6);
   CHECK(check_part_against_whole(cube, 0.2, with(50, np.refit(true))) > 0.5);
+  CHECK(check_part_against_whole(cube, 0.2, with(50, np.least_squares_first(true).adaptive(true))) > 0.4);
+  CHECK(check_part_against_whole(cube, 0.2, with(30, np.least_squares_first(true).refit(true).neighbor_radius(0.25))) > 0.4);
 
   // A regular grid, where many neighbors are at the same distance, the k-th
   // too: the ids settle the ties, not the tree.
@@ -712,6 +763,7 @@ TEST_CASE("point_id_map: a part of the cloud gives each point whose support it h
       grid.emplace_back(0.1 * i, 0.1 * j, (i > 30) ? 0.05 * (i - 30) : 0.);
   CHECK(check_part_against_whole(grid, 2.0, with(24, np)) > 0.6);
   CHECK(check_part_against_whole(grid, 2.0, with(24, np.refit(true))) > 0.5);
+  CHECK(check_part_against_whole(grid, 2.0, with(24, np.least_squares_first(true))) > 0.4);
   CHECK(check_part_against_whole(grid, 2.0, with(0, np.neighbor_radius(0.25))) > 0.6);
 }
 
@@ -739,9 +791,10 @@ TEST_CASE("point_id_map: by default the id is the position; support_radius_map i
 
   // Without refit, the support is the distance to the 40th nearest
   // neighbor; with it, at least that, and at most three times as large on
-  // this even sampling.
-  std::vector<Identified> refitted = identified(points);
+  // this even sampling; least squares first, at most four times.
+  std::vector<Identified> refitted = identified(points), first = identified(points);
   CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(refitted, 40, identified_maps.refit(true));
+  CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(first, 40, identified_maps.least_squares_first(true));
   for(std::size_t i = 0; i < points.size(); i += 97)
   {
     std::vector<double> distances;
@@ -751,12 +804,17 @@ TEST_CASE("point_id_map: by default the id is the position; support_radius_map i
     CHECK(std::get<3>(with_ids[i]) == Approx(distances[40]).epsilon(1e-12));
     CHECK(std::get<3>(refitted[i]) >= std::get<3>(with_ids[i]));
     CHECK(std::get<3>(refitted[i]) < 3 * std::get<3>(with_ids[i]));
+    CHECK(std::get<3>(first[i]) >= 2 * std::get<3>(with_ids[i]));
+    CHECK(std::get<3>(first[i]) < 4 * std::get<3>(with_ids[i]));
   }
 
   // A cloud of at most k points is every point's neighborhood: an infinite
   // support.
   std::vector<Identified> few = identified(std::vector<SC::Point_3>(points.begin(), points.begin() + 30));
   CGAL::rrht_estimate_normals<CGAL::Sequential_tag>(few, 40, identified_maps);
+  for(const Identified& e : few)
+    CHECK(std::isinf(std::get<3>(e)));
+  CGAL::rrht_estimate_normals<CGAL::Sequential_tag>(few, 40, identified_maps.least_squares_first(true));
   for(const Identified& e : few)
     CHECK(std::isinf(std::get<3>(e)));
 
@@ -788,16 +846,16 @@ TEST_CASE("neighbor_only_map: those points get nothing written, the others their
 {
   std::vector<SC::Point_3> points = points_of(noisy_cube(4000));
   points[11] = SC::Point_3(0.5, std::numeric_limits<double>::infinity(), 0); // only a neighbor, not finite
-  for(bool refit : { false, true })
+  for(int setting : { 0, 1, 2 })
   {
+    const auto np = identified_maps.refit(setting == 1).least_squares_first(setting == 2);
     std::vector<Identified> all = identified(points), some = identified(points);
-    CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(all, 40, identified_maps.refit(refit));
-    CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(
-      some, 40, identified_maps.refit(refit).neighbor_only_map(Beyond_cut{ 0.2 }));
+    CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(all, 40, np);
+    CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(some, 40, np.neighbor_only_map(Beyond_cut{ 0.2 }));
     std::size_t only = 0;
     for(std::size_t i = 0; i < points.size(); ++i)
     {
-      INFO("point " << i << (refit ? ", refit" : ""));
+      INFO("point " << i << ", setting " << setting);
       if(points[i].x() >= 0.2)
       {
         ++only;
@@ -814,4 +872,42 @@ TEST_CASE("neighbor_only_map: those points get nothing written, the others their
     }
     CHECK(only > points.size() / 4);
   }
+}
+
+TEST_CASE("Least squares first: the confidence written is that of the normal returned, and changes no normal",
+          "[api][least-squares-first][confidence]")
+{
+  const std::vector<SC::Point_3> points = points_of(noisy_cube(3000));
+  std::vector<Identified> with = identified(points), without = identified(points);
+  CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(
+    with, 50, identified_maps.least_squares_first(true).adaptive(true));
+  CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(
+    without, 50, params::point_map(CGAL::Nth_of_tuple_property_map<0, Identified>())
+                   .normal_map(CGAL::Nth_of_tuple_property_map<1, Identified>())
+                   .least_squares_first(true)
+                   .adaptive(true));
+  for(std::size_t i = 0; i < points.size(); ++i)
+    REQUIRE(std::get<1>(with[i]) == std::get<1>(without[i]));
+  // On the faces, where the quadric is kept, the cheap votes agree with it;
+  // near the edges, they scatter.
+  double faces = 0, edges = 0;
+  std::size_t on_faces = 0, near_edges = 0;
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    const double confidence = std::get<4>(with[i]);
+    REQUIRE(confidence >= 0);
+    REQUIRE(confidence <= 1);
+    const SC::Point_3& p = points[i];
+    double a[3] = { std::abs(p.x()), std::abs(p.y()), std::abs(p.z()) };
+    std::sort(a, a + 3);
+    const double to_edge = 1 - a[1]; // a[2] is about 1, on the face
+    if(to_edge > 0.3)
+      faces += confidence, ++on_faces;
+    else if(to_edge < 0.05)
+      edges += confidence, ++near_edges;
+  }
+  REQUIRE(on_faces > 100);
+  REQUIRE(near_edges > 100);
+  INFO("mean confidence " << faces / on_faces << " on the faces, " << edges / near_edges << " near the edges");
+  CHECK(faces / on_faces > 2 * edges / near_edges);
 }

@@ -23,6 +23,7 @@
 #include <CGAL/RRHT/internal/check_parameters.h>
 #include <CGAL/RRHT/internal/estimate_normal.h>
 #include <CGAL/RRHT/internal/for_each_block.h>
+#include <CGAL/RRHT/internal/least_squares_first.h>
 #include <CGAL/RRHT/internal/refit_normal.h>
 #include <CGAL/RRHT/internal/support_radius.h>
 
@@ -264,6 +265,29 @@ namespace CGAL {
                        result stays the same for any number of threads.}
      \cgalParamNEnd
 
+     \cgalParamNBegin{least_squares_first}
+       \cgalParamDescription{whether to keep the normal of jet fitting's quadric where the neighborhood is one smooth sheet
+                             within the noise, and run the Hough transform only at the other points (beyond the paper)}
+       \cgalParamType{bool}
+       \cgalParamDefault{`false`}
+       \cgalParamExtra{A first pass fits, by least squares, a quadric height field to all the n neighbors of each point in
+                       the frame of their principal axes, as `CGAL::jet_estimate_normals()` does, and estimates the
+                       noise deviation of its residuals from their nearest quarter, relative to the neighborhood's
+                       radius r. The quadric is one smooth sheet where the mean square of its residuals exceeds the
+                       noise variance of the scan around the point by at most (0.03 r)^2: that variance is the square
+                       of the first quartile of the deviations estimated at its neighbors, times 1 + 65.5 / (n - 6),
+                       as both estimates scatter more with fewer neighbors (the residuals are counted with their
+                       n - 6 degrees of freedom). Its normal is kept where it is one sheet and at most 15% of the
+                       nearest 60% of its neighbors are not: near a sharp feature, a neighborhood that only grazes it
+                       passes the test but its normal turns. At the other points, as along sharp features, the normal
+                       is that of the Hough transform with the other parameters (`adaptive` included), refitted with
+                       `refit` (with that first quartile as the noise deviation). The confidence written for a
+                       quadric's normal is measured on the votes of the Hough transform's first stage at the point
+                       (the cheap stage with `adaptive`), which then runs only if a `confidence_map` is given. The
+                       neighbors of every point are kept between the passes: 4 (n + 1) bytes per point, and at most
+                       2^32 - 1 points. The result stays the same for any number of threads.}
+     \cgalParamNEnd
+
      \cgalParamNBegin{point_id_map}
        \cgalParamDescription{a property map associating a stable id to each point of `points` (beyond the paper)}
        \cgalParamType{a model of `ReadablePropertyMap` whose key type is the value type
@@ -285,7 +309,9 @@ namespace CGAL {
        \cgalParamDefault{unused}
        \cgalParamExtra{It is the radius of the point's neighborhood (the distance to its `k`-th nearest neighbor, or
                        `neighbor_radius`); with `refit`, whose second pass reads the noise estimated around each
-                       neighbor, the largest distance to a neighbor plus the radius of that neighbor's neighborhood.
+                       neighbor, the largest distance to a neighbor plus the radius of that neighbor's neighborhood;
+                       with `least_squares_first`, whose tests read the neighborhoods of the neighbors of the point and
+                       of its nearest neighbors, the largest such distance over the point and its nearest 60%.
                        0 for a point with a non-finite coordinate; infinite where the neighborhood is all of a cloud
                        of fewer points than it asks for (at most `k`). A part of the cloud that holds every point of the
                        whole cloud within this radius of a point (the sphere included) gives that point the same
@@ -380,6 +406,10 @@ void rrht_estimate_normals(PointRange& points,
   settings.seed = choose_parameter(get_parameter(np, internal_np::random_seed), 0u);
   const bool adaptive = choose_parameter(get_parameter(np, rrht_np::adaptive), false);
   const bool refit = choose_parameter(get_parameter(np, rrht_np::refit), false);
+  const bool least_squares_first = choose_parameter(get_parameter(np, rrht_np::least_squares_first), false);
+  check(!least_squares_first ||
+          std::size_t(std::distance(points.begin(), points.end())) <= (std::numeric_limits<std::uint32_t>::max)(),
+        "least_squares_first handles at most 2^32 - 1 points at once: process larger clouds in tiles");
 
   // The finite points of the cloud in double precision, in one kd-tree along
   // a Hilbert curve, with their ids if a point_id_map is given. The others
@@ -430,14 +460,37 @@ void rrht_estimate_normals(PointRange& points,
   const bool cubes = adaptive ? stages.spatial.sampling == RRHT::Sampling::CUBES : settings.sampling == RRHT::Sampling::CUBES;
   const RRHT::internal::Cube_weights cube_weights(cubes ? settings.presampling_factor : 1);
 
+  constexpr bool with_supports =
+    !std::is_same<typename std::decay<decltype(get_parameter(np, rrht_np::support_radius_map))>::type,
+                  internal_np::Param_not_found>::value;
+  auto make_scratch = [&]() { return RRHT::internal::Scratch(layout, cube_weights, settings.presampling_factor); };
+  auto estimated = [&](std::size_t i) { return neighbor_only.empty() || !neighbor_only[search.input_index(i)]; };
+
+  if(least_squares_first)
+  {
+    constexpr bool with_confidences =
+      !std::is_same<typename std::decay<decltype(get_parameter(np, rrht_np::confidence_map))>::type,
+                    internal_np::Param_not_found>::value;
+    const RRHT::internal::Least_squares_first_options options{ adaptive ? &stages : nullptr, refit, with_confidences,
+                                                               with_supports };
+    RRHT::internal::Progress progress(callback, 3 * size);
+    RRHT::internal::least_squares_first<ConcurrencyTag>(
+      search, settings, options, progress, make_scratch, estimated, support_of,
+      [&](std::size_t i, const Eigen::Vector3d& normal, double confidence, double support) {
+        const auto element = elements.at(points.begin(), search.input_index(i));
+        put(normal_map, *element, Vector_3(FT(normal.x()), FT(normal.y()), FT(normal.z())));
+        put(confidence_map, *element, confidence);
+        put(support_radius_map, *element, support);
+      });
+    progress.finish();
+    return;
+  }
+
   // With `refit`, each RRHT normal is kept, with the noise deviation
   // estimated around it (and the radius of its neighborhood, for the
   // supports), for the second pass below.
   std::vector<Eigen::Vector3d> rrht_normals(refit ? size : 0);
   std::vector<double> noise(refit ? size : 0);
-  constexpr bool with_supports =
-    !std::is_same<typename std::decay<decltype(get_parameter(np, rrht_np::support_radius_map))>::type,
-                  internal_np::Param_not_found>::value;
   std::vector<double> radii(refit && with_supports ? size : 0);
 
   // Section 2, point by point: the planes through random triples of its
@@ -445,7 +498,6 @@ void rrht_estimate_normals(PointRange& points,
   // of their most voted bins are combined (`internal::estimate_normal()`).
   // Points are processed along the Hilbert curve, each with the random
   // stream of its id.
-  auto estimated = [&](std::size_t i) { return neighbor_only.empty() || !neighbor_only[search.input_index(i)]; };
   auto process = [&](std::size_t begin, std::size_t end, RRHT::internal::Scratch& scratch) {
     for(std::size_t i = begin; i < end; ++i)
     {
@@ -503,7 +555,6 @@ void rrht_estimate_normals(PointRange& points,
     }
   };
 
-  auto make_scratch = [&]() { return RRHT::internal::Scratch(layout, cube_weights, settings.presampling_factor); };
   RRHT::internal::Progress progress(callback, refit ? 2 * size : size);
   RRHT::internal::for_each_block<ConcurrencyTag>(size, progress, make_scratch, process);
   if(refit)

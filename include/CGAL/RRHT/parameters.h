@@ -31,6 +31,7 @@ namespace internal_np {
   X(confidence_map_t, confidence_map)                          \
   X(adaptive_t, adaptive)                                      \
   X(refit_t, refit)                                            \
+  X(least_squares_first_t, least_squares_first)                \
   X(point_id_map_t, point_id_map)                              \
   X(support_radius_map_t, support_radius_map)                  \
   X(neighbor_only_map_t, neighbor_only_map)                    \

@@ -221,6 +221,24 @@ public:
     out.complete = ball.size() == std::size_t(k) + 1;
   }
 
+  /// The neighborhood that `find()` gave at the point at position `query`,
+  /// rebuilt from the positions of its points and its radius without
+  /// searching again (`out.complete` is left as it is).
+  template <typename Positions>
+  void rebuild(std::size_t query, const Positions& positions, double radius, Neighborhood& out) const
+  {
+    const Point& q = m_points[query].first;
+    out.points.clear();
+    out.positions.clear();
+    for(auto position : positions)
+    {
+      const Point& p = m_points[position].first;
+      out.points.emplace_back(p.x() - q.x(), p.y() - q.y(), p.z() - q.z());
+      out.positions.push_back(position);
+    }
+    out.radius = radius;
+  }
+
 private:
   // Sorts neighbors by squared distance, then by id. Boost's branchless
   // pdqsort on the distances alone, the ids read only within the rare runs

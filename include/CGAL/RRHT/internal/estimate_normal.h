@@ -87,21 +87,19 @@ inline Estimated_normal estimate_normal_of_neighborhood(std::uint64_t id, const 
   }
 }
 
-/// The normal at the point at `position` in the search's order: with
-/// `settings`, or, if `stages` is not null, with the adaptive setting
-/// (`Adaptive_stages`). Returns the zero vector when no plane can be formed.
-inline Estimated_normal estimate_normal(std::size_t position, const Neighbor_search& search,
-                                        const Settings& settings, Scratch& scratch,
-                                        const Adaptive_stages* stages = nullptr)
+/// The normal of the neighborhood in `scratch.neighborhood`, of the point
+/// whose id is `id`: with `settings`, or, if `stages` is not null, with the
+/// adaptive setting (`Adaptive_stages`). Returns the zero vector when no
+/// plane can be formed.
+inline Estimated_normal estimate_normal_of_found(std::uint64_t id, const Settings& settings, Scratch& scratch,
+                                                 const Adaptive_stages* stages = nullptr)
 {
-  Neighborhood& neighborhood = scratch.neighborhood;
-  search.find(position, settings.k, settings.neighbor_radius, neighborhood, scratch.search);
+  const Neighborhood& neighborhood = scratch.neighborhood;
   // Fewer than 3 distinct points, or a ball so small (a `neighbor_radius`
   // below 1e-300) that the points cannot be scaled to the unit ball, nor to
   // the grids of RRHT_Cubes and RRHT_Unif, without overflow.
   if(neighborhood.points.size() < 3 || !(neighborhood.radius >= 1e-300))
     return Estimated_normal{ Eigen::Vector3d::Zero(), 0. };
-  const std::uint64_t id = search.id(position);
   if(stages == nullptr)
     return estimate_normal_of_neighborhood(id, settings, scratch);
 
@@ -110,6 +108,16 @@ inline Estimated_normal estimate_normal(std::size_t position, const Neighbor_sea
     return cheap;
   return estimate_normal_of_neighborhood(
     id, cheap.confidence < Adaptive_stages::spatial_below ? stages->spatial : stages->precise, scratch);
+}
+
+/// The normal at the point at `position` in the search's order, as
+/// `estimate_normal_of_found()` does on its neighborhood.
+inline Estimated_normal estimate_normal(std::size_t position, const Neighbor_search& search,
+                                        const Settings& settings, Scratch& scratch,
+                                        const Adaptive_stages* stages = nullptr)
+{
+  search.find(position, settings.k, settings.neighbor_radius, scratch.neighborhood, scratch.search);
+  return estimate_normal_of_found(search.id(position), settings, scratch, stages);
 }
 
 } // namespace internal

@@ -1,0 +1,278 @@
+// Copyright (c) 2026 The CGAL RRHT authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Least squares first (beyond the paper): the normal of jet fitting's
+// quadric where the neighborhood is one smooth sheet within the noise, the
+// Hough transform only elsewhere. On a smooth sheet, a least-squares fit on
+// all the neighbors is more accurate than votes of triples in a quantized
+// accumulator, and much cheaper; near a sharp feature it smooths the normal,
+// and the residuals of the quadric exceed the noise of the scan.
+
+#ifndef CGAL_RRHT_INTERNAL_LEAST_SQUARES_FIRST_H
+#define CGAL_RRHT_INTERNAL_LEAST_SQUARES_FIRST_H
+
+#include <CGAL/RRHT/internal/Neighbor_search.h>
+#include <CGAL/RRHT/internal/Progress.h>
+#include <CGAL/RRHT/internal/Scratch.h>
+#include <CGAL/RRHT/internal/Settings.h>
+#include <CGAL/RRHT/internal/adaptive.h>
+#include <CGAL/RRHT/internal/confidence.h>
+#include <CGAL/RRHT/internal/estimate_normal.h>
+#include <CGAL/RRHT/internal/for_each_block.h>
+#include <CGAL/RRHT/internal/refit_normal.h>
+
+#include <Eigen/Core>
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace RRHT {
+namespace internal {
+
+/// The tests of the least-squares-first estimation, chosen on the
+/// benchmark's clouds (`benchmark/README.md`, "Least squares first").
+struct Least_squares_first_thresholds
+{
+  /// The first quartile of the noise deviations estimated at the n
+  /// neighbors, squared, times 1 + `scatter` / (n - 6), bounds the noise
+  /// variance of one smooth sheet: the quartile of a few noisy estimates
+  /// lies below their mean, and the mean square of the residuals, with
+  /// n - 6 degrees of freedom, scatters about the variance, both as
+  /// 1 / (n - 6). Tuned at k = 100 on the sharp shapes, and at k = 12 and 18
+  /// on smooth ones.
+  static constexpr double scatter = 65.5;
+  /// A quadric is kept where the mean square of its residuals exceeds the
+  /// noise variance by at most the square of this share of the radius.
+  static constexpr double excess = 0.03;
+  /// ... and where at most `most_rejected` of the nearest `dilation` share
+  /// of its neighbors are rejected: next to a sharp feature, the quadric of
+  /// a neighborhood that only grazes it is accepted, but turned.
+  static constexpr double dilation = 0.6;
+  static constexpr double most_rejected = 0.15;
+};
+
+/// Jet fitting's quadric at a point: its normal, and its residuals' root
+/// mean square and noise deviation (lengths), or infinite ones and the null
+/// vector where it cannot be fitted.
+struct Quadric_fit
+{
+  Eigen::Vector3d normal;
+  double rms;
+  double noise;
+};
+
+/// Fits the quadric height field of all the neighbors `points` (relative to
+/// the point, within `radius`) in the frame of their principal axes, as
+/// jet fitting does. The residuals' root mean square and noise deviation
+/// (`noise_of_residuals()`) are both scaled by n / (n - 6), the degrees of
+/// freedom that the 6 coefficients take, so that they keep their meaning
+/// with few neighbors. A neighborhood of at most 6 points, or whose points
+/// are collinear, has no quadric.
+inline Quadric_fit fit_quadric(const std::vector<Eigen::Vector3d>& points, double radius, Refit_scratch& scratch)
+{
+  const double infinity = std::numeric_limits<double>::infinity();
+  const Quadric_fit none{ Eigen::Vector3d::Zero(), infinity, infinity };
+  const std::size_t size = points.size();
+  if(size <= 6 || !(radius >= 1e-300))
+    return none;
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();
+  for(const Eigen::Vector3d& p : points)
+    center += p;
+  center /= double(size);
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for(const Eigen::Vector3d& p : points)
+    covariance += (p - center) * (p - center).transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> axes(covariance);
+  // Eigenvalues are sorted increasingly: a line has a single large one.
+  if(!(axes.eigenvalues()[1] > 1e-12 * axes.eigenvalues()[2]))
+    return none;
+  const Eigen::Vector3d axis = axes.eigenvectors().col(0);
+  const Eigen::Vector3d u = axis.unitOrthogonal(), v = axis.cross(u);
+  to_frame(points, radius, axis, u, v, scratch.local);
+  const std::vector<Eigen::Vector3d>& local = scratch.local;
+  Eigen::Matrix<double, 6, 1> quadric;
+  if(!fit_height_field<6>(local, [&](std::size_t i) { return quadric_monomials(local[i]); },
+                          [](std::size_t) { return true; }, quadric))
+    return none;
+  std::vector<double>& residuals = scratch.residuals;
+  residuals.resize(size);
+  double squares = 0;
+  for(std::size_t i = 0; i < size; ++i)
+  {
+    residuals[i] = local[i].z() - quadric_height(quadric, local[i]);
+    squares += residuals[i] * residuals[i];
+  }
+  const double freedom = double(size - 6);
+  const Eigen::Vector3d normal = (axis - quadric[1] * u - quadric[2] * v).normalized();
+  if(!normal.allFinite())
+    return none;
+  return Quadric_fit{ normal, radius * std::sqrt(squares / freedom),
+                      radius * noise_of_residuals(residuals, scratch.work) * std::sqrt(double(size) / freedom) };
+}
+
+/// The neighborhoods of all the points, kept from the first pass for the
+/// next ones: the positions of each point's neighbors, nearest first.
+typedef std::vector<std::vector<std::uint32_t> > Neighbor_lists;
+
+/// Whether a quadric whose residuals have the root mean square `rms` is one
+/// smooth sheet within the noise of the scan in a ball of `radius`, where
+/// the first quartile of the noise deviations of its `count` neighbors is
+/// `noise_near` (`noise_of_neighbors()`).
+inline bool is_one_sheet(double rms, double noise_near, std::size_t count, double radius)
+{
+  typedef Least_squares_first_thresholds T;
+  if(count <= 6 || !std::isfinite(rms) || !std::isfinite(noise_near))
+    return false;
+  const double variance = noise_near * noise_near * (1 + T::scatter / double(count - 6));
+  const double excess = T::excess * radius;
+  return rms * rms - variance <= excess * excess;
+}
+
+/// The nearest neighbors of the point at `position` whose rejection
+/// vetoes its quadric: the nearest `dilation` share of `neighbors`, the
+/// point itself left out. Calls `visit(neighbor)` on each.
+template <typename Visit>
+void for_each_near_neighbor(std::size_t position, const std::vector<std::uint32_t>& neighbors, Visit visit)
+{
+  const std::size_t count =
+    neighbors.empty() ? 0 : std::size_t(std::ceil(Least_squares_first_thresholds::dilation * double(neighbors.size() - 1)));
+  std::size_t seen = 0;
+  for(std::size_t j = 0; j < neighbors.size() && seen < count; ++j)
+    if(neighbors[j] != position)
+      visit(neighbors[j]), ++seen;
+}
+
+/// Whether the quadric of the point at `position` is kept: its own test
+/// passed (`one_sheet`) and few of its near neighbors failed theirs.
+inline bool keeps_quadric(std::size_t position, const std::vector<std::uint32_t>& neighbors,
+                          const std::vector<unsigned char>& one_sheet)
+{
+  if(!one_sheet[position])
+    return false;
+  std::size_t near = 0, rejected = 0;
+  for_each_near_neighbor(position, neighbors, [&](std::uint32_t j) { ++near, rejected += !one_sheet[j]; });
+  return double(rejected) <= Least_squares_first_thresholds::most_rejected * double(near);
+}
+
+/// What `least_squares_first()` needs to know of the call.
+struct Least_squares_first_options
+{
+  const Adaptive_stages* stages; // the adaptive setting, or null for `settings` alone
+  bool refit;                    // refit the normals of the Hough transform (`refit_normal()`)
+  bool confidences;              // compute the confidences
+  bool supports;                 // compute the support radii
+};
+
+/// Estimates the normals of the points of `search` at the positions where
+/// `estimated(position)`, least squares first, in three passes over the
+/// cloud, and calls `write(position, normal, confidence, support)` for each:
+/// 1. at every point, the quadric of its neighborhood (`fit_quadric()`),
+///    whose neighbors are kept;
+/// 2. at every point, whether it is one sheet within the noise around it
+///    (`noise_of_neighbors()` over the deviations relative to each
+///    neighbor's radius, `is_one_sheet()`);
+/// 3. where the quadric is kept (`keeps_quadric()`), its normal; elsewhere,
+///    the Hough transform's, with `settings` or the adaptive `stages`, then
+///    refitted if asked.
+/// The confidence of a quadric's normal is measured on the votes of the
+/// Hough transform's first stage at the point (`confidence()`). The support
+/// is the ball that holds the neighborhoods of the point's neighbors and of
+/// its near neighbors' neighbors, whose tests decide; `support_of(neighborhood)`
+/// is the radius of the support of a neighborhood alone.
+template <typename ConcurrencyTag, typename MakeScratch, typename Estimated, typename SupportOf, typename Write>
+void least_squares_first(const Neighbor_search& search, const Settings& settings,
+                         const Least_squares_first_options& options, Progress& progress, MakeScratch make_scratch,
+                         Estimated estimated, SupportOf support_of, Write write)
+{
+  const std::size_t size = search.size();
+  Neighbor_lists neighbors(size);
+  std::vector<Eigen::Vector3d> normals(size);
+  std::vector<double> rms(size), noise(size), radii(size), extents(options.supports ? size : 0);
+  for_each_block<ConcurrencyTag>(size, progress, make_scratch, [&](std::size_t begin, std::size_t end, Scratch& scratch) {
+    Neighborhood& neighborhood = scratch.neighborhood;
+    for(std::size_t i = begin; i < end; ++i)
+    {
+      search.find(i, settings.k, settings.neighbor_radius, neighborhood, scratch.search);
+      neighbors[i].assign(neighborhood.positions.begin(), neighborhood.positions.end());
+      radii[i] = neighborhood.radius;
+      if(options.supports)
+        extents[i] = support_of(neighborhood);
+      const Quadric_fit fit = fit_quadric(neighborhood.points, neighborhood.radius, scratch.refit);
+      // The noise relative to the neighborhood's radius: where the density
+      // varies, so does the scale of the neighborhoods a deviation is from.
+      normals[i] = fit.normal, rms[i] = fit.rms, noise[i] = fit.noise / neighborhood.radius;
+    }
+  });
+
+  // The noise around each point, its test and, for the supports, the ball
+  // that holds its neighbors' neighborhoods.
+  std::vector<double> noise_near(size), reach(options.supports ? size : 0);
+  std::vector<unsigned char> one_sheet(size);
+  for_each_block<ConcurrencyTag>(size, progress, make_scratch, [&](std::size_t begin, std::size_t end, Scratch& scratch) {
+    for(std::size_t i = begin; i < end; ++i)
+    {
+      noise_near[i] = radii[i] * noise_of_neighbors(neighbors[i], noise, scratch.refit.work);
+      one_sheet[i] = is_one_sheet(rms[i], noise_near[i], neighbors[i].size(), radii[i]);
+      if(options.supports)
+      {
+        double farthest = 0;
+        for(std::uint32_t j : neighbors[i])
+          farthest = (std::max)(farthest, (search.point(j) - search.point(i)).norm() + extents[j]);
+        reach[i] = farthest;
+      }
+    }
+  });
+  std::vector<double>().swap(noise);
+
+  const Settings& first_stage = options.stages ? options.stages->cheap : settings;
+  for_each_block<ConcurrencyTag>(size, progress, make_scratch, [&](std::size_t begin, std::size_t end, Scratch& scratch) {
+    Neighborhood& neighborhood = scratch.neighborhood;
+    for(std::size_t i = begin; i < end; ++i)
+    {
+      if(!estimated(i))
+        continue;
+      double support = 0;
+      if(options.supports)
+      {
+        support = reach[i];
+        for_each_near_neighbor(i, neighbors[i], [&](std::uint32_t j) {
+          support = (std::max)(support, (search.point(j) - search.point(i)).norm() + reach[j]);
+        });
+      }
+      const bool quadric = keeps_quadric(i, neighbors[i], one_sheet);
+      if(quadric && !options.confidences)
+      {
+        write(i, normals[i], 0., support);
+        continue;
+      }
+      search.rebuild(i, neighbors[i], radii[i], neighborhood);
+      if(quadric)
+      {
+        estimate_normal_of_neighborhood(search.id(i), first_stage, scratch);
+        write(i, normals[i], confidence(scratch.candidates, normals[i], first_stage.cos_cluster_angle), support);
+        continue;
+      }
+      Estimated_normal e = estimate_normal_of_found(search.id(i), settings, scratch, options.stages);
+      if(options.refit && e.normal != Eigen::Vector3d::Zero() && std::isfinite(noise_near[i]))
+      {
+        const Eigen::Vector3d refitted =
+          refit_normal(neighborhood.points, neighborhood.radius, e.normal, noise_near[i], scratch.refit);
+        if(refitted != Eigen::Vector3d::Zero())
+          e.normal = refitted;
+      }
+      write(i, e.normal, e.confidence, support);
+    }
+  });
+}
+
+} // namespace internal
+} // namespace RRHT
+} // namespace CGAL
+
+#endif // CGAL_RRHT_INTERNAL_LEAST_SQUARES_FIRST_H
