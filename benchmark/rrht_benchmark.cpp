@@ -786,7 +786,8 @@ void fillets(const Config& config)
 
 // -- Least squares first (beyond the paper): jet fitting's quadric where
 // the neighborhood is one smooth sheet within the noise, the adaptive
-// setting elsewhere, against every setting of RRHT and jet fitting (K = 80)
+// setting elsewhere, against the defaults, the adaptive setting alone and
+// jet fitting (K = 80)
 // on 100k points, 2 threads: the sharp shapes with 0.2% noise, the cube with
 // 1% noise, the fillet shapes, the sphere and the bunny, clean and with 0.2%
 // noise, and the thin parts (0.5% and 2% of the diagonal thick, 0.2% noise);
@@ -797,8 +798,7 @@ void least_squares_first(const Config& config)
   Experiment x(config, "least_squares_first");
   const std::size_t n = 100000;
   auto compare = [&](const Dataset& d) {
-    for(const Estimator& e : { rrht_least_squares_first(rrht_k), rrht_defaults(rrht_k), rrht(Rrht_setting::fast(), rrht_k),
-                               rrht_adaptive(rrht_k), rrht_refit(rrht_k), rrht_adaptive_refit(rrht_k), jet(paper_k) })
+    for(const Estimator& e : { rrht_least_squares_first(rrht_k), rrht_defaults(rrht_k), rrht_adaptive(rrht_k), jet(paper_k) })
       x.run(d, e);
   };
   for(const Shape_with_edges& shape : shapes_with_edges(config))
