@@ -36,7 +36,7 @@ namespace RRHT {
 namespace internal {
 
 /// The tests of the least-squares-first estimation, chosen on the
-/// benchmark's clouds (`benchmark/README.md`, "Least squares first").
+/// benchmark's clouds (the user manual, "Least squares first").
 struct Least_squares_first_thresholds
 {
   /// The first quartile of the noise deviations estimated at the n
