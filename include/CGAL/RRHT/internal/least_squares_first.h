@@ -81,14 +81,7 @@ inline Quadric_fit fit_quadric(const std::vector<Eigen::Vector3d>& points, doubl
   const std::size_t size = points.size();
   if(size <= 6 || !(radius >= 1e-300))
     return none;
-  Eigen::Vector3d center = Eigen::Vector3d::Zero();
-  for(const Eigen::Vector3d& p : points)
-    center += p;
-  center /= double(size);
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-  for(const Eigen::Vector3d& p : points)
-    covariance += (p - center) * (p - center).transpose();
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> axes(covariance);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> axes = principal_axes(points, [](std::size_t) { return true; });
   // Eigenvalues are sorted increasingly: a line has a single large one.
   if(!(axes.eigenvalues()[1] > 1e-12 * axes.eigenvalues()[2]))
     return none;

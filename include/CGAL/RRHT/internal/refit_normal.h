@@ -137,9 +137,10 @@ inline double quadric_height(const Eigen::Matrix<double, 6, 1>& c, const Eigen::
   return c.dot(quadric_monomials(p));
 }
 
-/// The unit normal of the smallest axis of `points` where `use(i)`.
+/// The principal axes of `points` where `use(i)`: the eigenvectors of their
+/// covariance, by increasing eigenvalue.
 template <class Use>
-Eigen::Vector3d principal_normal(const std::vector<Eigen::Vector3d>& points, Use use)
+Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> principal_axes(const std::vector<Eigen::Vector3d>& points, Use use)
 {
   Eigen::Vector3d center = Eigen::Vector3d::Zero();
   double count = 0;
@@ -151,7 +152,14 @@ Eigen::Vector3d principal_normal(const std::vector<Eigen::Vector3d>& points, Use
   for(std::size_t i = 0; i < points.size(); ++i)
     if(use(i))
       covariance += (points[i] - center) * (points[i] - center).transpose();
-  return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance).eigenvectors().col(0);
+  return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance);
+}
+
+/// The unit normal of the smallest axis of `points` where `use(i)`.
+template <class Use>
+Eigen::Vector3d principal_normal(const std::vector<Eigen::Vector3d>& points, Use use)
+{
+  return principal_axes(points, use).eigenvectors().col(0);
 }
 
 /// Whether two unit directions, sign ignored, are at most `degrees` apart.
