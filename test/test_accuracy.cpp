@@ -12,9 +12,12 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <random>
 #include <string>
+#include <vector>
 
 using namespace rrht_test;
 namespace params = CGAL::RRHT::parameters;
@@ -468,6 +471,67 @@ TEST_CASE("Least squares first: sharp edges are kept (cube, corner)", "[accuracy
     INFO(shape.first);
     CHECK(e.first.share_above <= 0.5 * e.jet_k80.share_above);
     CHECK(e.first.share_above <= e.defaults.share_above + 0.005);
+  }
+}
+
+namespace {
+// The 100 points nearest to `p` of a grid of spacing 0.02 over the profile `at(s)` (a point of the x-z plane, s
+// its arc length in [-1.5, 1.5]) swept along y, relative to `p`, nearest first.
+template <typename Profile>
+std::vector<Eigen::Vector3d> nearest_of_profile(Profile at, const Eigen::Vector3d& p)
+{
+  std::vector<Eigen::Vector3d> points;
+  for(int i = -75; i <= 75; ++i)
+    for(int j = -75; j <= 75; ++j)
+    {
+      const Eigen::Vector2d xz = at(0.02 * i);
+      points.emplace_back(Eigen::Vector3d(xz.x(), 0.02 * j, xz.y()) - p);
+    }
+  std::sort(points.begin(), points.end(),
+            [](const Eigen::Vector3d& a, const Eigen::Vector3d& b) { return a.squaredNorm() < b.squaredNorm(); });
+  points.resize(100);
+  return points;
+}
+} // namespace
+
+TEST_CASE("Least squares first: next to a sharp edge the Hough transform's normal is taken, on a fillet the quadric's",
+          "[accuracy][least-squares-first]")
+{
+  using CGAL::RRHT::internal::fit_quadric;
+  using CGAL::RRHT::internal::prefers_hough;
+  CGAL::RRHT::internal::Refit_scratch scratch;
+  const Eigen::Vector3d up(0, 0, 1);
+  auto degrees = [](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+    return std::acos((std::min)(1., std::abs(a.dot(b)))) * 180 / CGAL_PI;
+  };
+  {
+    // The face z = 0 up to a right-angled edge at x = 0.07, then the face x = 0.07 downwards; the point is on the
+    // first face at the origin, whose exact normal the Hough transform returns there.
+    const std::vector<Eigen::Vector3d> points = nearest_of_profile(
+      [](double s) { return s < 0.07 ? Eigen::Vector2d(s, 0) : Eigen::Vector2d(0.07, 0.07 - s); }, Eigen::Vector3d::Zero());
+    const Eigen::Vector3d quadric = fit_quadric(points, points.back().norm(), scratch).normal;
+    INFO("the quadric is " << degrees(quadric, up) << " degrees from the face's normal");
+    REQUIRE(degrees(quadric, up) > 5);
+    CHECK(prefers_hough(up, quadric, points, scratch));
+  }
+  {
+    // The face z = 0 up to x = 0, a fillet of radius 0.05 down to the face x = 0.05; the point is in the middle of
+    // the fillet, where the Hough transform returns the first face's normal.
+    const double r = 0.05, quarter = CGAL_PI / 2 * r;
+    auto profile = [=](double s) {
+      if(s < 0)
+        return Eigen::Vector2d(s, 0);
+      if(s < quarter)
+        return Eigen::Vector2d(r * std::sin(s / r), r * std::cos(s / r) - r);
+      return Eigen::Vector2d(r, -r - (s - quarter));
+    };
+    const Eigen::Vector2d middle = profile(quarter / 2);
+    const Eigen::Vector3d exact(std::sqrt(0.5), 0, std::sqrt(0.5));
+    const std::vector<Eigen::Vector3d> points = nearest_of_profile(profile, Eigen::Vector3d(middle.x(), 0, middle.y()));
+    const Eigen::Vector3d quadric = fit_quadric(points, points.back().norm(), scratch).normal;
+    INFO("the quadric is " << degrees(quadric, exact) << " degrees from the exact normal");
+    REQUIRE(degrees(quadric, exact) < 5);
+    CHECK(!prefers_hough(up, quadric, points, scratch));
   }
 }
 

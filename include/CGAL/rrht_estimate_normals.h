@@ -279,11 +279,16 @@ namespace CGAL {
                        as both estimates scatter more with fewer neighbors (the residuals are counted with their
                        n - 6 degrees of freedom). Its normal is kept where it is one sheet and at most 15% of the
                        nearest 60% of its neighbors are not: near a sharp feature, a neighborhood that only grazes it
-                       passes the test but its normal turns. At the other points, as along sharp features, the normal
+                       passes the test but its normal turns. Where a neighbor failed the test and the kept normal is
+                       more than 5 degrees from that of the Hough transform's first stage (the cheap stage with
+                       `adaptive`), the quadric of the nearest 30% of the neighbors (at least 12) picks the nearer of
+                       the two: next to a sharp feature, the Hough transform keeps to the point's side; on a fillet
+                       narrower than the neighborhood, it takes a flat side. At the other points, as along sharp features, the normal
                        is that of the Hough transform with the other parameters (`adaptive` included), refitted with
                        `refit` (with that first quartile as the noise deviation). The confidence written for a
                        quadric's normal is measured on the votes of the Hough transform's first stage at the point
-                       (the cheap stage with `adaptive`), which then runs only if a `confidence_map` is given. The
+                       (the cheap stage with `adaptive`), which runs where the quadric is kept only next to a point
+                       that failed the test, or if a `confidence_map` is given. The
                        neighbors of every point are kept between the passes: 4 (n + 1) bytes per point, and at most
                        2^32 - 1 points. The result stays the same for any number of threads.}
      \cgalParamNEnd
@@ -311,7 +316,7 @@ namespace CGAL {
                        `neighbor_radius`); with `refit`, whose second pass reads the noise estimated around each
                        neighbor, the largest distance to a neighbor plus the radius of that neighbor's neighborhood;
                        with `least_squares_first`, whose tests read the neighborhoods of the neighbors of the point and
-                       of its nearest neighbors, the largest such distance over the point and its nearest 60%.
+                       of its neighbors, the largest such distance over the point and its neighbors.
                        0 for a point with a non-finite coordinate; infinite where the neighborhood is all of a cloud
                        of fewer points than it asks for (at most `k`). A part of the cloud that holds every point of the
                        whole cloud within this radius of a point (the sphere included) gives that point the same

@@ -87,6 +87,18 @@ inline Estimated_normal estimate_normal_of_neighborhood(std::uint64_t id, const 
   }
 }
 
+/// The adaptive setting's normal of the neighborhood in
+/// `scratch.neighborhood`, of the point whose id is `id`, whose normal with
+/// the cheap stage is `cheap` (`Adaptive_stages`).
+inline Estimated_normal recheck(std::uint64_t id, const Estimated_normal& cheap, const Adaptive_stages& stages,
+                                Scratch& scratch)
+{
+  if(cheap.confidence >= Adaptive_stages::recheck_below)
+    return cheap;
+  return estimate_normal_of_neighborhood(
+    id, cheap.confidence < Adaptive_stages::spatial_below ? stages.spatial : stages.precise, scratch);
+}
+
 /// The normal of the neighborhood in `scratch.neighborhood`, of the point
 /// whose id is `id`: with `settings`, or, if `stages` is not null, with the
 /// adaptive setting (`Adaptive_stages`). Returns the zero vector when no
@@ -102,12 +114,7 @@ inline Estimated_normal estimate_normal_of_found(std::uint64_t id, const Setting
     return Estimated_normal{ Eigen::Vector3d::Zero(), 0. };
   if(stages == nullptr)
     return estimate_normal_of_neighborhood(id, settings, scratch);
-
-  const Estimated_normal cheap = estimate_normal_of_neighborhood(id, stages->cheap, scratch);
-  if(cheap.confidence >= Adaptive_stages::recheck_below)
-    return cheap;
-  return estimate_normal_of_neighborhood(
-    id, cheap.confidence < Adaptive_stages::spatial_below ? stages->spatial : stages->precise, scratch);
+  return recheck(id, estimate_normal_of_neighborhood(id, stages->cheap, scratch), *stages, scratch);
 }
 
 /// The normal at the point at `position` in the search's order, as

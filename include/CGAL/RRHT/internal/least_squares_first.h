@@ -55,6 +55,13 @@ struct Least_squares_first_thresholds
   /// a neighborhood that only grazes it is accepted, but turned.
   static constexpr double dilation = 0.6;
   static constexpr double most_rejected = 0.15;
+  /// Where a kept quadric's neighborhood holds a rejected point and its
+  /// normal is more than 5 degrees (this cosine) from the Hough transform's
+  /// first stage, the quadric of the nearest `referee` share of the
+  /// neighbors, at least `referee_min`, tells which of the two to take.
+  static constexpr double cos_turn = 0.99619469809174553;
+  static constexpr double referee = 0.3;
+  static constexpr std::size_t referee_min = 12;
 };
 
 /// Jet fitting's quadric at a point: its normal, and its residuals' root
@@ -153,6 +160,27 @@ inline bool keeps_quadric(std::size_t position, const std::vector<std::uint32_t>
   return double(rejected) <= Least_squares_first_thresholds::most_rejected * double(near);
 }
 
+/// Whether the Hough transform's normal `hough` is taken instead of the
+/// kept quadric's normal `quadric` at a point next to rejected ones, whose
+/// neighborhood `points` are relative to it, nearest first. Next to a sharp
+/// feature, the quadric of a neighborhood that grazes it turns towards the
+/// other side while the Hough transform and the quadric of the nearer
+/// neighbors stay on the point's side; on a fillet narrower than the
+/// neighborhood, the Hough transform takes a flat side while the nearer
+/// quadric follows the fillet.
+inline bool prefers_hough(const Eigen::Vector3d& hough, const Eigen::Vector3d& quadric,
+                          const std::vector<Eigen::Vector3d>& points, Refit_scratch& scratch)
+{
+  typedef Least_squares_first_thresholds T;
+  if(std::abs(hough.dot(quadric)) >= T::cos_turn || points.empty())
+    return false;
+  const std::size_t count =
+    (std::min)(points.size(), (std::max)(std::size_t(T::referee * double(points.size())), T::referee_min));
+  scratch.nearest.assign(points.begin(), points.begin() + std::ptrdiff_t(count));
+  const Eigen::Vector3d referee = fit_quadric(scratch.nearest, scratch.nearest.back().norm(), scratch).normal;
+  return std::abs(referee.dot(hough)) > std::abs(referee.dot(quadric));
+}
+
 /// What `least_squares_first()` needs to know of the call.
 struct Least_squares_first_options
 {
@@ -170,14 +198,15 @@ struct Least_squares_first_options
 /// 2. at every point, whether it is one sheet within the noise around it
 ///    (`noise_of_neighbors()` over the deviations relative to each
 ///    neighbor's radius, `is_one_sheet()`);
-/// 3. where the quadric is kept (`keeps_quadric()`), its normal; elsewhere,
-///    the Hough transform's, with `settings` or the adaptive `stages`, then
-///    refitted if asked.
+/// 3. where the quadric is kept (`keeps_quadric()`), its normal, unless a
+///    neighbor was rejected and the Hough transform's first stage is
+///    preferred (`prefers_hough()`); elsewhere, the Hough transform's, with
+///    `settings` or the adaptive `stages`, then refitted if asked.
 /// The confidence of a quadric's normal is measured on the votes of the
 /// Hough transform's first stage at the point (`confidence()`). The support
-/// is the ball that holds the neighborhoods of the point's neighbors and of
-/// its near neighbors' neighbors, whose tests decide; `support_of(neighborhood)`
-/// is the radius of the support of a neighborhood alone.
+/// is the ball that holds the neighborhoods of the point's neighbors'
+/// neighbors, whose tests decide; `support_of(neighborhood)` is the radius
+/// of the support of a neighborhood alone.
 template <typename ConcurrencyTag, typename MakeScratch, typename Estimated, typename SupportOf, typename Write>
 void least_squares_first(const Neighbor_search& search, const Settings& settings,
                          const Least_squares_first_options& options, Progress& progress, MakeScratch make_scratch,
@@ -234,24 +263,32 @@ void least_squares_first(const Neighbor_search& search, const Settings& settings
       if(options.supports)
       {
         support = reach[i];
-        for_each_near_neighbor(i, neighbors[i], [&](std::uint32_t j) {
+        for(std::uint32_t j : neighbors[i])
           support = (std::max)(support, (search.point(j) - search.point(i)).norm() + reach[j]);
-        });
       }
       const bool quadric = keeps_quadric(i, neighbors[i], one_sheet);
-      if(quadric && !options.confidences)
+      const bool border = quadric && std::any_of(neighbors[i].begin(), neighbors[i].end(),
+                                                 [&](std::uint32_t j) { return !one_sheet[j]; });
+      if(quadric && !border && !options.confidences)
       {
         write(i, normals[i], 0., support);
         continue;
       }
       search.rebuild(i, neighbors[i], radii[i], neighborhood);
+      const std::uint64_t id = search.id(i);
+      Estimated_normal e;
       if(quadric)
       {
-        estimate_normal_of_neighborhood(search.id(i), first_stage, scratch);
-        write(i, normals[i], confidence(scratch.candidates, normals[i], first_stage.cos_cluster_angle), support);
-        continue;
+        const Estimated_normal cheap = estimate_normal_of_neighborhood(id, first_stage, scratch);
+        if(!border || !prefers_hough(cheap.normal, normals[i], neighborhood.points, scratch.refit))
+        {
+          write(i, normals[i], confidence(scratch.candidates, normals[i], first_stage.cos_cluster_angle), support);
+          continue;
+        }
+        e = options.stages ? recheck(id, cheap, *options.stages, scratch) : cheap;
       }
-      Estimated_normal e = estimate_normal_of_found(search.id(i), settings, scratch, options.stages);
+      else
+        e = estimate_normal_of_found(id, settings, scratch, options.stages);
       if(options.refit && e.normal != Eigen::Vector3d::Zero() && std::isfinite(noise_near[i]))
       {
         const Eigen::Vector3d refitted =

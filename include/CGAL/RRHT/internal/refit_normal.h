@@ -68,7 +68,8 @@ struct Refit_scratch
 {
   std::vector<Eigen::Vector3d> local; // the neighborhood in the frame of the fit, over the radius
   std::vector<double> residuals, work;
-  std::vector<unsigned char> sheet; // 1 for the sheet without the point
+  std::vector<unsigned char> sheet;     // 1 for the sheet without the point
+  std::vector<Eigen::Vector3d> nearest; // the nearest of the neighbors
 };
 
 /// The first quartile of `values`, which it reorders.
