@@ -281,8 +281,8 @@ namespace CGAL {
                        nearest 60% of its neighbors are not: near a sharp feature, a neighborhood that only grazes it
                        passes the test but its normal turns. Where a neighbor failed the test and the kept normal is
                        more than 5 degrees from that of the Hough transform's first stage (the cheap stage with
-                       `adaptive`), the quadric of the nearest 30% of the neighbors (at least 12) picks the nearer of
-                       the two: next to a sharp feature, the Hough transform keeps to the point's side; on a fillet
+                       `adaptive`), the quadric of the nearest 30% of the neighbors (if they are at least 24) picks
+                       the nearer of the two: next to a sharp feature, the Hough transform keeps to the point's side; on a fillet
                        narrower than the neighborhood, it takes a flat side. At the other points, as along sharp features, the normal
                        is that of the Hough transform with the other parameters (`adaptive` included), refitted with
                        `refit` (with that first quartile as the noise deviation). The confidence written for a

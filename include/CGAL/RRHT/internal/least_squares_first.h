@@ -58,10 +58,12 @@ struct Least_squares_first_thresholds
   /// Where a kept quadric's neighborhood holds a rejected point and its
   /// normal is more than 5 degrees (this cosine) from the Hough transform's
   /// first stage, the quadric of the nearest `referee` share of the
-  /// neighbors, at least `referee_min`, tells which of the two to take.
+  /// neighbors tells which of the two to take, if that share holds at least
+  /// `referee_min` points: with fewer, with noise, the referee and the
+  /// Hough transform are both too scattered to overrule the quadric.
   static constexpr double cos_turn = 0.99619469809174553;
   static constexpr double referee = 0.3;
-  static constexpr std::size_t referee_min = 12;
+  static constexpr std::size_t referee_min = 24;
 };
 
 /// Jet fitting's quadric at a point: its normal, and its residuals' root
@@ -172,10 +174,9 @@ inline bool prefers_hough(const Eigen::Vector3d& hough, const Eigen::Vector3d& q
                           const std::vector<Eigen::Vector3d>& points, Refit_scratch& scratch)
 {
   typedef Least_squares_first_thresholds T;
-  if(std::abs(hough.dot(quadric)) >= T::cos_turn || points.empty())
+  const std::size_t count = std::size_t(T::referee * double(points.size()));
+  if(count < T::referee_min || std::abs(hough.dot(quadric)) >= T::cos_turn)
     return false;
-  const std::size_t count =
-    (std::min)(points.size(), (std::max)(std::size_t(T::referee * double(points.size())), T::referee_min));
   scratch.nearest.assign(points.begin(), points.begin() + std::ptrdiff_t(count));
   const Eigen::Vector3d referee = fit_quadric(scratch.nearest, scratch.nearest.back().norm(), scratch).normal;
   return std::abs(referee.dot(hough)) > std::abs(referee.dot(quadric));
