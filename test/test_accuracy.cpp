@@ -545,3 +545,93 @@ TEST_CASE("Least squares first: a thin box whose sides are within the noise, bet
   CHECK(e.first.share_above < e.jet_k80.share_above);
   CHECK(e.first.share_above < 0.5 * e.defaults.share_above);
 }
+
+TEST_CASE("Least squares first: the sides of a thin part are told apart, the strip of another face is not one",
+          "[accuracy][least-squares-first]")
+{
+  using CGAL::RRHT::internal::own_sheet;
+  std::mt19937_64 generator(8);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  std::normal_distribution<double> noise(0, 0.01);
+  const Eigen::Vector3d up(0, 0, 1);
+  std::vector<Eigen::Vector3d> own;
+  std::vector<double> work;
+  // `count` points of the plane z = height in the unit ball, noisy, the point itself at the origin first.
+  auto sheet = [&](std::vector<Eigen::Vector3d>& points, std::size_t count, double height) {
+    if(points.empty())
+      points.emplace_back(Eigen::Vector3d::Zero());
+    while(count > 0)
+    {
+      const Eigen::Vector3d p(uniform(generator), uniform(generator), height + noise(generator));
+      if(p.squaredNorm() <= 1)
+        points.push_back(p), --count;
+    }
+  };
+  auto on_own_side = [&](const std::vector<Eigen::Vector3d>& points) {
+    std::size_t near = 0;
+    for(const Eigen::Vector3d& p : points)
+      near += std::abs(p.z()) < 0.05;
+    return near;
+  };
+  SECTION("two sheets 10 noise deviations apart")
+  {
+    std::vector<Eigen::Vector3d> points;
+    sheet(points, 69, 0), sheet(points, 30, -0.1);
+    REQUIRE(own_sheet(points, up, own, work));
+    CHECK(own.size() == on_own_side(points));
+    CHECK(on_own_side(own) == own.size());
+  }
+  SECTION("the other side just touches the ball: a single point")
+  {
+    std::vector<Eigen::Vector3d> points;
+    sheet(points, 98, 0), sheet(points, 1, 0.1);
+    REQUIRE(own_sheet(points, up, own, work));
+    CHECK(own.size() == 99);
+  }
+  SECTION("one noisy sheet")
+  {
+    for(int trial = 0; trial < 100; ++trial)
+    {
+      std::vector<Eigen::Vector3d> points;
+      sheet(points, 99, 0);
+      CHECK(!own_sheet(points, up, own, work));
+    }
+  }
+  SECTION("a face and the strip of another one across a sharp edge: the quadric of the group kept is not turned")
+  {
+    using namespace CGAL::RRHT::internal;
+    Refit_scratch scratch;
+    for(int trial = 0; trial < 100; ++trial)
+    {
+      std::vector<Eigen::Vector3d> points;
+      sheet(points, 69, 0);
+      for(int i = 0; i < 30; ++i) // the face x = 0.5, z < 0, noise-free
+        points.emplace_back(0.5, uniform(generator) * 0.8, -0.4 * (1 + uniform(generator)));
+      if(own_sheet(points, up, own, work))
+      {
+        const Quadric_fit fit = fit_quadric(own, 1, scratch);
+        if(is_one_sheet(fit.rms, 0.01, own.size(), 1))
+          CHECK(std::abs(fit.normal.dot(up)) > std::cos(5 * CGAL_PI / 180));
+      }
+    }
+  }
+  SECTION("too few points to tell")
+  {
+    std::vector<Eigen::Vector3d> points;
+    sheet(points, 25, 0), sheet(points, 10, -0.1);
+    CHECK(!own_sheet(points, up, own, work));
+  }
+}
+
+TEST_CASE("Least squares first: a thin part whose sides are apart beyond the noise, the quadric of each side",
+          "[accuracy][least-squares-first]")
+{
+  // Sides 4.5% of the diagonal apart, 0.2% noise: the other side is at the rim of the neighborhoods.
+  Cloud cloud = bent_sheet(20000, 0.045 * std::sqrt(6.), 2);
+  add_noise(cloud, 0.2, 78);
+  const Least_squares_first_errors e = least_squares_first_errors("thin bent sheet", cloud);
+  CHECK(e.first.rms < 0.8 * e.adaptive.rms);
+  CHECK(e.first.rms < e.defaults.rms);
+  CHECK(e.first.share_above < 0.001);
+  CHECK(e.first.rms < e.jet_k80.rms);
+}

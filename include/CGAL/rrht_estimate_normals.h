@@ -277,7 +277,10 @@ namespace CGAL {
                        noise variance of the scan around the point by at most (0.03 r)^2: that variance is the square
                        of the first quartile of the deviations estimated at its neighbors, times 1 + 65.5 / (n - 6),
                        as both estimates scatter more with fewer neighbors (the residuals are counted with their
-                       n - 6 degrees of freedom). Its normal is kept where it is one sheet and at most 15% of the
+                       n - 6 degrees of freedom). Where it is not, in a neighborhood of at least 40 points whose
+                       offsets from the quadric's tangent plane split in two groups whose means are more than 3.5
+                       times the larger spread within them apart (the two sides of a thin part), the quadric of the
+                       point's own group replaces it if that one passes the test. Its normal is kept where it is one sheet and at most 15% of the
                        nearest 60% of its neighbors are not: near a sharp feature, a neighborhood that only grazes it
                        passes the test but its normal turns. Where a neighbor failed the test and the kept normal is
                        more than 5 degrees from that of the Hough transform's first stage (the cheap stage with

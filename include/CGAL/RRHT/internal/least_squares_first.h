@@ -2,8 +2,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Least squares first (beyond the paper): the normal of jet fitting's
-// quadric where the neighborhood is one smooth sheet within the noise, the
-// Hough transform only elsewhere. On a smooth sheet, a least-squares fit on
+// quadric where the neighborhood, or on a thin part the point's own side of
+// it, is one smooth sheet within the noise, the Hough transform only
+// elsewhere. On a smooth sheet, a least-squares fit on
 // all the neighbors is more accurate than votes of triples in a quantized
 // accumulator, and much cheaper; near a sharp feature it smooths the normal,
 // and the residuals of the quadric exceed the noise of the scan.
@@ -29,6 +30,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -64,6 +66,14 @@ struct Least_squares_first_thresholds
   static constexpr double cos_turn = 0.99619469809174553;
   static constexpr double referee = 0.3;
   static constexpr std::size_t referee_min = 24;
+  /// A neighborhood holds a second sheet (the other side of a thin part)
+  /// where its offsets from the tangent plane split in two groups whose
+  /// means are more than `sheets_apart` times the spread within the groups
+  /// apart: the two halves of one noisy sheet are about 2.7 apart.
+  static constexpr double sheets_apart = 3.5;
+  /// ... in a neighborhood of at least `least_for_sheets` points: in fewer,
+  /// the few points of another face across an edge pass for a sheet.
+  static constexpr std::size_t least_for_sheets = 40;
 };
 
 /// Jet fitting's quadric at a point: its normal, and its residuals' root
@@ -116,6 +126,57 @@ inline Quadric_fit fit_quadric(const std::vector<Eigen::Vector3d>& points, doubl
     return none;
   return Quadric_fit{ normal, radius * std::sqrt(squares / freedom),
                       radius * noise_of_residuals(residuals, scratch.work) * std::sqrt(double(size) / freedom) };
+}
+
+/// The neighbors `points` (relative to the point) on the point's own sheet,
+/// in `own`, where they hold a second sheet along `normal`
+/// (`Least_squares_first_thresholds::sheets_apart`), found by the split of
+/// their offsets in two groups of least squared deviation from their means
+/// (1D 2-means, exact on the sorted offsets); false where they hold one
+/// sheet. A group may be a single point: the other side of a thin part may
+/// just touch the ball.
+inline bool own_sheet(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& normal,
+                      std::vector<Eigen::Vector3d>& own, std::vector<double>& offsets)
+{
+  const std::size_t size = points.size();
+  if(size < Least_squares_first_thresholds::least_for_sheets)
+    return false;
+  offsets.resize(size);
+  for(std::size_t i = 0; i < size; ++i)
+    offsets[i] = normal.dot(points[i]);
+  std::sort(offsets.begin(), offsets.end());
+  double sum = 0, squares = 0;
+  for(double h : offsets)
+    sum += h, squares += h * h;
+  double least = std::numeric_limits<double>::infinity(), below = 0, below_squares = 0;
+  std::size_t at = 0;
+  for(std::size_t i = 1; i < size; ++i)
+  {
+    below += offsets[i - 1], below_squares += offsets[i - 1] * offsets[i - 1];
+    const double n_below = double(i), n_above = double(size - i), above = sum - below;
+    const double about_means =
+      below_squares - below * below / n_below + (squares - below_squares) - above * above / n_above;
+    if(about_means < least)
+      least = about_means, at = i;
+  }
+  // Each group is a sheet: both spreads, not only their pool, are small
+  // beside the gap, unlike the strip of another face across an edge.
+  auto mean_and_spread = [&](std::size_t first, std::size_t last) {
+    double s = 0, q = 0;
+    for(std::size_t i = first; i < last; ++i)
+      s += offsets[i], q += offsets[i] * offsets[i];
+    const double n = double(last - first), mean = s / n;
+    return std::make_pair(mean, n > 1 ? std::sqrt((std::max)(0., q - s * mean) / (n - 1)) : 0.);
+  };
+  const std::pair<double, double> low = mean_and_spread(0, at), high = mean_and_spread(at, size);
+  const double split = 0.5 * (offsets[at - 1] + offsets[at]);
+  if(!(high.first - low.first > Least_squares_first_thresholds::sheets_apart * (std::max)(low.second, high.second)))
+    return false;
+  own.clear();
+  for(const Eigen::Vector3d& p : points)
+    if((normal.dot(p) > split) == (0 > split))
+      own.push_back(p);
+  return true;
 }
 
 /// The neighborhoods of all the points, kept from the first pass for the
@@ -198,7 +259,9 @@ struct Least_squares_first_options
 ///    whose neighbors are kept;
 /// 2. at every point, whether it is one sheet within the noise around it
 ///    (`noise_of_neighbors()` over the deviations relative to each
-///    neighbor's radius, `is_one_sheet()`);
+///    neighbor's radius, `is_one_sheet()`); where it is not but the
+///    neighborhood holds two sheets (`own_sheet()`), the quadric of the
+///    point's own sheet replaces it if that one is;
 /// 3. where the quadric is kept (`keeps_quadric()`), its normal, unless a
 ///    neighbor was rejected and the Hough transform's first stage is
 ///    preferred (`prefers_hough()`); elsewhere, the Hough transform's, with
@@ -242,6 +305,18 @@ void least_squares_first(const Neighbor_search& search, const Settings& settings
     {
       noise_near[i] = radii[i] * noise_of_neighbors(neighbors[i], noise, scratch.refit.work);
       one_sheet[i] = is_one_sheet(rms[i], noise_near[i], neighbors[i].size(), radii[i]);
+      if(!one_sheet[i] && normals[i] != Eigen::Vector3d::Zero())
+      {
+        // Two sheets: the quadric of the point's own, if it is one sheet.
+        search.rebuild(i, neighbors[i], radii[i], scratch.neighborhood);
+        std::vector<Eigen::Vector3d>& own = scratch.refit.own;
+        if(own_sheet(scratch.neighborhood.points, normals[i], own, scratch.refit.work))
+        {
+          const Quadric_fit fit = fit_quadric(own, radii[i], scratch.refit);
+          if(is_one_sheet(fit.rms, noise_near[i], own.size(), radii[i]))
+            one_sheet[i] = 1, normals[i] = fit.normal;
+        }
+      }
       if(options.supports)
       {
         double farthest = 0;

@@ -70,6 +70,7 @@ struct Refit_scratch
   std::vector<double> residuals, work;
   std::vector<unsigned char> sheet;     // 1 for the sheet without the point
   std::vector<Eigen::Vector3d> nearest; // the nearest of the neighbors
+  std::vector<Eigen::Vector3d> own;     // the neighbors on the point's own sheet
 };
 
 /// The first quartile of `values`, which it reorders.
