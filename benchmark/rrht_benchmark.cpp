@@ -790,7 +790,8 @@ void fillets(const Config& config)
 // jet fitting (K = 80)
 // on 100k points, 2 threads: the sharp shapes with 0.2% noise, the cube with
 // 1% noise, the fillet shapes, the sphere and the bunny, clean and with 0.2%
-// noise, and the thin parts (0.5% and 2% of the diagonal thick, 0.2% noise);
+// noise, and the thin parts (0.5% and 2% of the diagonal thick, 0.2% noise;
+// the parts 2% thick and the filleted plate at 20k points too);
 // then the sphere and the bunny at CGAL's usual small k (12 and 18), where
 // it runs against jet fitting and the defaults at the same k.
 void least_squares_first(const Config& config)
@@ -827,6 +828,12 @@ void least_squares_first(const Config& config)
     compare(with_noise(std::string("thin_box") + t, thin_box(n, percent / 100 * std::sqrt(8.), 1), 0.2, 1));
     compare(with_noise(std::string("bent_sheet") + t, bent_sheet(n, percent / 100 * std::sqrt(6.), 2), 0.2, 2));
   }
+  // The parts 2% thick and the filleted plate at 20k points: both sides lie
+  // well inside every neighborhood.
+  const std::size_t sparse = 20000;
+  compare(with_noise("thin_box_t2%_20k", thin_box(sparse, 0.02 * std::sqrt(8.), 1), 0.2, 1));
+  compare(with_noise("bent_sheet_t2%_20k", bent_sheet(sparse, 0.02 * std::sqrt(6.), 2), 0.2, 2));
+  compare(with_noise("filleted_plate_20k", filleted_plate(sparse, 0.05, 0.1, 62), 0.2, 62));
   for(double noise : { 0., 0.2 })
   {
     std::vector<Dataset> smooth = { synthetic("sphere", sphere, n, noise, 5) };

@@ -615,6 +615,18 @@ TEST_CASE("Least squares first: the sides of a thin part are told apart, the str
       }
     }
   }
+  SECTION("two sheets well inside the ball: the residuals of their quadric are bimodal")
+  {
+    using namespace CGAL::RRHT::internal;
+    Refit_scratch scratch;
+    std::vector<Eigen::Vector3d> points;
+    sheet(points, 59, 0), sheet(points, 40, -0.1);
+    const Quadric_fit both = fit_quadric(points, 1, scratch);
+    CHECK(both.noise > Least_squares_first_thresholds::bimodal * both.rms);
+    const Quadric_fit mine = fit_own_sheet(points, 1, both.normal, scratch);
+    CHECK(std::abs(mine.normal.dot(up)) > std::cos(2 * CGAL_PI / 180));
+    CHECK(mine.noise < 0.02);
+  }
   SECTION("too few points to tell")
   {
     std::vector<Eigen::Vector3d> points;
@@ -634,4 +646,16 @@ TEST_CASE("Least squares first: a thin part whose sides are apart beyond the noi
   CHECK(e.first.rms < e.defaults.rms);
   CHECK(e.first.share_above < 0.001);
   CHECK(e.first.rms < e.jet_k80.rms);
+}
+
+TEST_CASE("Least squares first: a thin part whose two sides lie well inside every neighborhood, the quadric of each side",
+          "[accuracy][least-squares-first]")
+{
+  // Sides 2% of the diagonal apart, 0.2% noise, 20k points: the neighborhoods of 100 points reach 4 times as far.
+  Cloud cloud = bent_sheet(20000, 0.02 * std::sqrt(6.), 2);
+  add_noise(cloud, 0.2, 79);
+  const Least_squares_first_errors e = least_squares_first_errors("sparse thin bent sheet", cloud);
+  CHECK(e.first.share_above < 0.005);
+  CHECK(e.first.rms < e.defaults.rms);
+  CHECK(e.first.share_above < 0.1 * e.jet_k80.share_above);
 }

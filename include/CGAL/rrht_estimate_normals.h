@@ -273,7 +273,9 @@ namespace CGAL {
        \cgalParamExtra{A first pass fits, by least squares, a quadric height field to all the n neighbors of each point in
                        the frame of their principal axes, as `CGAL::jet_estimate_normals()` does, and estimates the
                        noise deviation of its residuals from their nearest quarter, relative to the neighborhood's
-                       radius r. The quadric is one smooth sheet where the mean square of its residuals exceeds the
+                       radius r; where that deviation is more than 1.5 times the residuals' root mean square (bimodal
+                       residuals: the two sides of a thin part well inside the neighborhood), the quadric of the
+                       point's own side (found by the split below) replaces it. The quadric is one smooth sheet where the mean square of its residuals exceeds the
                        noise variance of the scan around the point by at most (0.03 r)^2: that variance is the square
                        of the first quartile of the deviations estimated at its neighbors, times 1 + 65.5 / (n - 6),
                        as both estimates scatter more with fewer neighbors (the residuals are counted with their

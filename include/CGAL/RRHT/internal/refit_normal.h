@@ -81,6 +81,29 @@ inline double first_quartile(std::vector<double>& values)
   return *quartile;
 }
 
+/// The split of the sorted `values` (two or more) into two contiguous
+/// groups of least squared deviation from their means (1D 2-means, exact):
+/// the first position of the upper group, which may be a single value.
+inline std::size_t split_in_two(const std::vector<double>& sorted)
+{
+  const std::size_t size = sorted.size();
+  double sum = 0, squares = 0;
+  for(double x : sorted)
+    sum += x, squares += x * x;
+  double least = std::numeric_limits<double>::infinity(), below = 0, below_squares = 0;
+  std::size_t at = 1;
+  for(std::size_t i = 1; i < size; ++i)
+  {
+    below += sorted[i - 1], below_squares += sorted[i - 1] * sorted[i - 1];
+    const double n_below = double(i), n_above = double(size - i), above = sum - below;
+    const double about_means =
+      below_squares - below * below / n_below + (squares - below_squares) - above * above / n_above;
+    if(about_means < least)
+      least = about_means, at = i;
+  }
+  return at;
+}
+
 /// The noise deviation of residuals from the nearest quarter of their
 /// absolute values, which neighbors of another sheet do not reach: for a
 /// centered Gaussian, the first quartile of |x| is 0.3186 sigma.
@@ -250,19 +273,8 @@ inline Eigen::Vector3d fit_two_sheets(const std::vector<Eigen::Vector3d>& points
     for(std::size_t i = 0; i < size; ++i)
       heights[i] = local[i].z();
     std::sort(heights.begin(), heights.end());
-    double sum = 0, sum_of_squares = 0;
-    for(double h : heights)
-      sum += h, sum_of_squares += h * h;
-    double least = std::numeric_limits<double>::infinity(), split = 0, below = 0, below_squares = 0;
-    for(std::size_t i = 1; i < size; ++i)
-    {
-      below += heights[i - 1], below_squares += heights[i - 1] * heights[i - 1];
-      const double n_below = double(i), n_above = double(size - i);
-      const double about_means = below_squares - below * below / n_below + (sum_of_squares - below_squares) -
-                                 (sum - below) * (sum - below) / n_above;
-      if(about_means < least)
-        least = about_means, split = 0.5 * (heights[i - 1] + heights[i]);
-    }
+    const std::size_t at = split_in_two(heights);
+    const double split = 0.5 * (heights[at - 1] + heights[at]);
     for(std::size_t i = 0; i < size; ++i)
       sheet[i] = (local[i].z() > split) != (0 > split);
 
