@@ -34,7 +34,7 @@ run_suite() { # build folder, extra cmake arguments...
   cmake -S "$root" -B "$build" -DCGAL_RRHT_BUILD_TESTS=ON -DCGAL_RRHT_BUILD_EXAMPLES=ON \
         -DCGAL_RRHT_WARNINGS_AS_ERRORS=ON "$@" > /dev/null
   cmake --build "$build" -j"$jobs"
-  (cd "$build" && ctest --output-on-failure -j1)
+  (cd "$build" && ctest --output-on-failure -j"$jobs")
 }
 
 # The same input and seed give the same normals, written exactly (17

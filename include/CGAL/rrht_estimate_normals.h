@@ -270,32 +270,33 @@ namespace CGAL {
                              within the noise, and run the Hough transform only at the other points (beyond the paper)}
        \cgalParamType{bool}
        \cgalParamDefault{`false`}
-       \cgalParamExtra{A first pass fits, by least squares, a quadric height field to all the n neighbors of each point in
-                       the frame of their principal axes, as `CGAL::jet_estimate_normals()` does, and estimates the
+       \cgalParamExtra{A first pass fits, by least squares, a quadric height field to all the n neighbors of each point
+                       in the frame of their principal axes, as `CGAL::jet_estimate_normals()` does, and estimates the
                        noise deviation of its residuals from their nearest quarter, relative to the neighborhood's
                        radius r; where that deviation is more than 1.5 times the residuals' root mean square (bimodal
-                       residuals: the two sides of a thin part well inside the neighborhood), the quadric of the
-                       point's own side (found by the split below) replaces it. The quadric is one smooth sheet where the mean square of its residuals exceeds the
-                       noise variance of the scan around the point by at most (0.03 r)^2: that variance is the square
-                       of the first quartile of the deviations estimated at its neighbors, times 1 + 65.5 / (n - 6),
-                       as both estimates scatter more with fewer neighbors (the residuals are counted with their
-                       n - 6 degrees of freedom). Where it is not, in a neighborhood of at least 40 points whose
-                       offsets from the quadric's tangent plane split in two groups whose means are more than 3.5
-                       times the larger spread within them apart (the two sides of a thin part), the quadric of the
-                       point's own group replaces it if that one passes the test. Its normal is kept where it is one sheet and at most 15% of the
-                       nearest 60% of its neighbors are not: near a sharp feature, a neighborhood that only grazes it
-                       passes the test but its normal turns. Where a neighbor failed the test and the kept normal is
-                       more than 5 degrees from that of the Hough transform's first stage (the cheap stage with
-                       `adaptive`), the quadric of the nearest 30% of the neighbors (if they are at least 24) picks
-                       the nearer of the two: next to a sharp feature, the Hough transform keeps to the point's side; on a fillet
-                       narrower than the neighborhood, it takes a flat side. At the other points, as along sharp features, the normal
-                       is that of the Hough transform with the other parameters (`adaptive` included), refitted with
-                       `refit` (with that first quartile as the noise deviation). The confidence written for a
-                       quadric's normal is measured on the votes of the Hough transform's first stage at the point
-                       (the cheap stage with `adaptive`), which runs where the quadric is kept only next to a point
-                       that failed the test, or if a `confidence_map` is given. The
-                       neighbors of every point are kept between the passes: 4 (n + 1) bytes per point, and at most
-                       2^32 - 1 points. The result stays the same for any number of threads.}
+                       residuals: the two sides of a thin part well inside the neighborhood), the quadric of the point's
+                       own side (found by the split below) replaces it. The quadric is one smooth sheet where the mean
+                       square of its residuals exceeds the noise variance of the scan around the point by at most
+                       (0.03 r)^2: that variance is the square of the first quartile of the deviations estimated at its
+                       neighbors, times 1 + 65.5 / (n - 6), as both estimates scatter more with fewer neighbors (the
+                       residuals are counted with their n - 6 degrees of freedom). Where it is not, in a neighborhood of
+                       at least 40 points whose offsets from the quadric's tangent plane split in two groups whose means
+                       are more than 3.5 times the larger spread within them apart (the two sides of a thin part), the
+                       quadric of the point's own group replaces it if that one passes the test. Its normal is kept
+                       where it is one sheet and at most 15% of the nearest 60% of its neighbors are not: near a sharp
+                       feature, a neighborhood that only grazes it passes the test but its normal turns. Where a
+                       neighbor failed the test and the kept normal is more than 5 degrees from that of the Hough
+                       transform's first stage (the cheap stage with `adaptive`), the quadric of the nearest 30% of the
+                       neighbors (if they are at least 24) picks the nearer of the two: next to a sharp feature, the
+                       Hough transform keeps to the point's side; on a fillet narrower than the neighborhood, it takes a
+                       flat side. At the other points, as along sharp features, the normal is that of the Hough
+                       transform with the other parameters (`adaptive` included), refitted with `refit` (with that first
+                       quartile as the noise deviation). The confidence written for a quadric's normal is measured on
+                       the votes of the Hough transform's first stage at the point (the cheap stage with `adaptive`),
+                       which runs where the quadric is kept only next to a point that failed the test, or if a
+                       `confidence_map` is given. The neighbors of every point are kept between the passes: 4 (n + 1)
+                       bytes per point, and at most 2^32 - 1 points. The result stays the same for any number of
+                       threads.}
      \cgalParamNEnd
 
      \cgalParamNBegin{point_id_map}
