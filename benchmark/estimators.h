@@ -49,6 +49,13 @@ struct Neighborhood
 
 inline auto sample_maps() { return CGAL::RRHT::parameters::point_map(Point_of_sample()).normal_map(Normal_of_sample()); }
 
+/// `sample_maps()` with the paper's precise setting, on which the paper's
+/// variants and the options below are built.
+inline auto paper_sample_maps()
+{
+  return CGAL::RRHT::parameters::paper_precise().point_map(Point_of_sample()).normal_map(Normal_of_sample());
+}
+
 /// RRHT settings of the paper's Section 6.
 struct Rrht_setting
 {
@@ -103,7 +110,7 @@ inline Estimator rrht(const Rrht_setting& s, const Neighborhood& n)
   e.estimate = [s, n](Cloud& cloud, unsigned int) {
     CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(
       cloud, n.k,
-      sample_maps()
+      paper_sample_maps()
         .neighbor_radius(n.radius)
         .sampling(s.sampling)
         .aggregation(s.aggregation)
@@ -114,9 +121,8 @@ inline Estimator rrht(const Rrht_setting& s, const Neighborhood& n)
   return e;
 }
 
-/// RRHT with the defaults of `CGAL::rrht_estimate_normals()` (T_R from eq. 7:
-/// 691, n_rot = 5) and the options `adaptive`, `refit` and
-/// `least_squares_first` (all false by default), named `name`.
+/// RRHT with the paper's precise setting (T_R from eq. 7: 691, n_rot = 5) and
+/// the options `adaptive`, `refit` and `least_squares_first`, named `name`.
 inline Estimator rrht_with_options(const std::string& name, const Neighborhood& n, bool adaptive, bool refit,
                                    bool least_squares_first = false)
 {
@@ -131,7 +137,20 @@ inline Estimator rrht_with_options(const std::string& name, const Neighborhood& 
   return e;
 }
 
-/// The defaults, named with their neighborhood: "RRHT_defaults_K18".
+/// The defaults of `CGAL::rrht_estimate_normals()`, no RRHT parameter given
+/// (least squares first with the adaptive Hough transform): "RRHT_default".
+inline Estimator rrht_default(const Neighborhood& n)
+{
+  Estimator e;
+  e.name = "RRHT_default";
+  e.rotations = 5;
+  e.estimate = [n](Cloud& cloud, unsigned int) {
+    CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(cloud, n.k, sample_maps().neighbor_radius(n.radius));
+  };
+  return e;
+}
+
+/// The paper's precise setting, named with its neighborhood: "RRHT_defaults_K18".
 inline Estimator rrht_defaults(const Neighborhood& n)
 {
   return rrht_with_options("RRHT_defaults" + n.suffix(), n, false, false);
@@ -167,7 +186,7 @@ inline Estimator rrht_defaults_with_confidence(const Neighborhood& n)
   e.name += "_confidence";
   e.estimate = [n](Cloud& cloud, unsigned int) {
     CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(
-      cloud, n.k, sample_maps().neighbor_radius(n.radius).confidence_map(Confidence_of_sample()));
+      cloud, n.k, paper_sample_maps().neighbor_radius(n.radius).confidence_map(Confidence_of_sample()));
   };
   return e;
 }

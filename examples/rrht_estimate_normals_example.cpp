@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Reads a point set, estimates its normals with the Robust Randomized Hough
-// Transform (default parameters, the paper's precise setting), writes them.
+// Transform (default parameters), writes them.
 //
 //   rrht_estimate_normals_example [input.xyz [output.xyz]]
 //
@@ -40,9 +40,11 @@ int main(int argc, char** argv)
     return EXIT_FAILURE;
   }
 
-  // The same call as CGAL::jet_estimate_normals(), with RRHT's defaults:
-  // T_R from eq. 7, n_phi = 15, n_rot = 5, confidence-interval stop,
-  // RRHT_Points sampling, mean over the best cluster.
+  // The same call as CGAL::jet_estimate_normals(), with RRHT's defaults: a
+  // quadric fitted by least squares where the neighborhood is one smooth
+  // sheet, the Hough transform elsewhere, as along sharp features.
+  // CGAL::RRHT::parameters::paper_precise().point_map(...).normal_map(...)
+  // would run the paper's precise setting at every point instead.
   const unsigned int k = 100; // neighbors, as in the paper's Table 1
   CGAL::Real_timer timer;
   timer.start();

@@ -70,7 +70,11 @@ const std::vector<std::string> input_extensions = { ".xyz", ".pwn", ".ply", ".of
 };
 const std::vector<std::string> output_extensions = { ".xyz", ".pwn", ".ply" };
 
-// The names of the choices of --sampling and --aggregation, each spelled once.
+// The names of the choices of --setting, --sampling and --aggregation, each spelled once.
+enum class Setting { DEFAULT, PAPER_PRECISE, PAPER_FAST };
+const std::vector<std::pair<std::string, Setting>> settings = {
+  { "default", Setting::DEFAULT }, { "paper_precise", Setting::PAPER_PRECISE }, { "paper_fast", Setting::PAPER_FAST }
+};
 const std::vector<std::pair<std::string, CGAL::RRHT::Sampling>> samplings = {
   { "points", CGAL::RRHT::Sampling::POINTS }, { "cubes", CGAL::RRHT::Sampling::CUBES }, { "unif", CGAL::RRHT::Sampling::UNIF }
 };
@@ -248,6 +252,10 @@ void orient(std::vector<Point_with_normal>& points, const std::string& how)
 
 int main(int argc, char** argv)
 {
+  const std::string setting_help =
+    one_of(names_of(settings)) + ": least squares where the neighborhood is one smooth sheet, the adaptive Hough "
+    "transform elsewhere (default), or the paper's settings, the Hough transform everywhere (paper_precise: T_R from "
+    "eq. 7 and 5 rotations; paper_fast: 300 planes and 2 rotations, unless --planes or --rotations say otherwise)";
   const std::string sampling_help = "triple sampling: " + one_of(names_of(samplings));
   const std::string aggregation_help = one_of(names_of(aggregations));
   po::options_description described("Options");
@@ -257,6 +265,7 @@ int main(int argc, char** argv)
      "K: number of neighbors; with --radius, the cap on the points taken from a ball (0: no cap)")
     ("radius,r", po::value<double>()->default_value(0., "0 (k-neighborhoods)"),
      "r: neighborhood ball radius")
+    ("setting", po::value<std::string>()->default_value("default"), setting_help.c_str())
     ("planes", po::value<long long>()->default_value(0, "eq. 7, 691 for 15 slices"),
      "T_R: most planes drawn per accumulator (1 to 100000000)")
     ("rotations", po::value<long long>()->default_value(5), "n_rot: randomly rotated accumulators (1 to 100000)")
@@ -266,8 +275,11 @@ int main(int argc, char** argv)
     ("aggregation", po::value<std::string>()->default_value("cluster"), aggregation_help.c_str())
     ("cluster-angle", po::value<double>()->default_value(45.), "a_cluster in degrees (0 to 180)")
     ("no-confidence-interval", "do not stop early on disjoint confidence intervals (eq. 10)")
-    ("adaptive", "the adaptive setting: the fast setting everywhere, estimated again with --planes and --rotations "
-                 "where its confidence is low (beyond the paper)")
+    ("adaptive", "with a paper setting, the adaptive setting: the fast setting everywhere, estimated again with "
+                 "--planes and --rotations where its confidence is low (beyond the paper; part of the default)")
+    ("least-squares-first", "with a paper setting, least squares first: the quadric of jet fitting where the "
+                            "neighborhood is one smooth sheet, the Hough transform elsewhere (beyond the paper; part "
+                            "of the default)")
     ("refit", "refit each normal by least squares (a quadric on the neighbors within the noise of its plane, "
               "or two parallel planes) where the neighborhood is one smooth sheet or the two sides of a thin part "
               "(beyond the paper)")
@@ -329,14 +341,21 @@ int main(int argc, char** argv)
       throw po::error("--confidence needs a .ply or .xyz output: .pwn holds points and normals only");
 
     const unsigned int k = static_cast<unsigned int>(options["neighbors"].as<long long>());
-    const long long planes = options["planes"].as<long long>(); // 0: the library's default
+    // The setting gives the defaults of the options below; an option given
+    // on the command line wins.
+    const Setting setting = choice(options, "setting", settings);
+    const bool paper = setting != Setting::DEFAULT, fast = setting == Setting::PAPER_FAST;
+    // 0 planes: the library's default.
+    const long long planes = fast && options["planes"].defaulted() ? 300 : options["planes"].as<long long>();
+    const long long rotations = fast && options["rotations"].defaulted() ? 2 : options["rotations"].as<long long>();
     const auto np = CGAL::RRHT::parameters::point_map(Point_map())
                       .normal_map(Normal_map())
                       .neighbor_radius(options["radius"].as<double>())
-                      .number_of_rotations(options["rotations"].as<long long>())
+                      .number_of_rotations(rotations)
                       .accumulator_slices(options["slices"].as<long long>())
                       .use_confidence_interval(options.count("no-confidence-interval") == 0)
-                      .adaptive(options.count("adaptive") > 0)
+                      .least_squares_first(!paper || options.count("least-squares-first") > 0)
+                      .adaptive(!paper || options.count("adaptive") > 0)
                       .refit(options.count("refit") > 0)
                       .sampling(choice(options, "sampling", samplings))
                       .presampling_factor(options["presampling"].as<long long>())

@@ -42,11 +42,12 @@ run_suite() { # build folder, extra cmake arguments...
 same_normals() { # build, reference build
   local data=$root/examples/data runs=(
     ""
-    "--planes 300 --rotations 2 --sampling cubes"
-    "--planes 300 --rotations 2 --sampling unif --aggregation mean"
+    "--setting paper_fast --sampling cubes"
+    "--setting paper_fast --sampling unif --aggregation mean"
     "--radius 0.05 -k 0 --seed 7"
-    "--radius 0.05 -k 30 --aggregation best --slices 12"
-    "--refit --planes 300 --rotations 2")
+    "--setting paper_precise --radius 0.05 -k 30 --aggregation best --slices 12"
+    "--setting paper_fast --refit"
+    "--refit -k 40")
   local i=0
   for run in "${runs[@]}"; do
     for build in "$1" "$2"; do

@@ -24,7 +24,8 @@ namespace params = CGAL::RRHT::parameters;
 
 namespace {
 
-const auto maps = params::point_map(Point_of_sample()).normal_map(Normal_of_sample());
+// The paper's precise setting, on which the tests of its variants and options build.
+const auto maps = params::paper_precise().point_map(Point_of_sample()).normal_map(Normal_of_sample());
 
 Errors rrht(Cloud& cloud, unsigned int k, CGAL::RRHT::Sampling sampling = CGAL::RRHT::Sampling::POINTS)
 {
@@ -658,4 +659,28 @@ TEST_CASE("Least squares first: a thin part whose two sides lie well inside ever
   CHECK(e.first.share_above < 0.005);
   CHECK(e.first.rms < e.defaults.rms);
   CHECK(e.first.share_above < 0.1 * e.jet_k80.share_above);
+}
+
+TEST_CASE("Least squares first: a thin part whose other side tilts the principal axes, the quadric of each side",
+          "[accuracy][least-squares-first]")
+{
+  // Sides 2% of the diagonal apart, 20k points, K = 60: the neighborhoods
+  // are about as deep as wide, and the other side tilts their principal
+  // axes by 5 to 25 degrees without making the residuals bimodal.
+  for(double noise : { 0., 0.2 })
+  {
+    Cloud cloud = thin_box(20000, 0.02 * std::sqrt(8.), 3);
+    add_noise(cloud, noise, 7);
+    Cloud first = cloud, paper = cloud;
+    CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(first, 60, maps.adaptive(true).least_squares_first(true));
+    CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(paper, 60, maps);
+    const Errors f = errors(first), p = errors(paper);
+    INFO("noise " << noise << "%");
+    print("sparse thin box, K = 60", "RRHT least squares first", f);
+    print("sparse thin box, K = 60", "RRHT defaults", p);
+    // Measured: 4.2% against 4.3% noise-free, 5.2% against 6.5% with noise,
+    // nearly all of them on the rims, 3 neighbor spacings wide.
+    CHECK(f.share_above <= p.share_above + 0.002);
+    CHECK(f.share_above < 0.06);
+  }
 }

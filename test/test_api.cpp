@@ -218,48 +218,71 @@ TEST_CASE("Every documented named-parameter form", "[api][parameters]")
     return normals_of<SC>(cloud);
   };
 
-  // 1. A plain CGAL chain, exactly as for jet fitting: RRHT defaults.
+  // 1. A plain CGAL chain, exactly as for jet fitting: RRHT defaults, which
+  // are least squares first with the adaptive Hough transform.
   const auto defaults = run(CGAL::parameters::point_map(point_map).normal_map(normal_map));
-  CHECK(share_above_10_degrees(defaults, truth) < 0.08);
+  CHECK(share_above_10_degrees(defaults, truth) < 0.12);
+  CHECK(run(params::point_map(point_map).normal_map(normal_map).least_squares_first(true).adaptive(true)) == defaults);
   {
     Pair_cloud<SC> cloud = input; // the same expression still works with jet fitting
     CGAL::jet_estimate_normals<CGAL::Sequential_tag>(cloud, 40, CGAL::parameters::point_map(point_map).normal_map(normal_map));
   }
-  // 2. An RRHT chain repeating the defaults explicitly gives the same normals.
-  const auto explicit_defaults = run(params::point_map(point_map)
-                                       .normal_map(normal_map)
-                                       .number_of_planes(CGAL::RRHT::hoeffding_number_of_planes(172))
-                                       .accumulator_slices(15)
-                                       .number_of_rotations(5)
-                                       .use_confidence_interval(true)
-                                       .sampling(Sampling::POINTS)
-                                       .presampling_factor(4)
-                                       .aggregation(Aggregation::CLUSTER)
-                                       .cluster_angle(45.)
-                                       .random_seed(0));
-  CHECK(explicit_defaults == defaults);
-  // 3. RRHT parameters first, then CGAL ones, in any order: the same normals.
-  const auto fast = run(params::number_of_planes(300).point_map(point_map).number_of_rotations(2).normal_map(normal_map));
-  const auto fast_reordered = run(params::normal_map(normal_map).number_of_rotations(2).point_map(point_map).number_of_planes(300));
+  // 2. The paper's precise setting: the preset, and an RRHT chain repeating
+  // its values explicitly, give the same normals.
+  const auto precise = run(params::paper_precise().point_map(point_map).normal_map(normal_map));
+  CHECK(share_above_10_degrees(precise, truth) < 0.08);
+  CHECK(precise != defaults);
+  const auto explicit_precise = run(params::point_map(point_map)
+                                      .normal_map(normal_map)
+                                      .least_squares_first(false)
+                                      .adaptive(false)
+                                      .refit(false)
+                                      .number_of_planes(CGAL::RRHT::hoeffding_number_of_planes(172))
+                                      .accumulator_slices(15)
+                                      .number_of_rotations(5)
+                                      .use_confidence_interval(true)
+                                      .sampling(Sampling::POINTS)
+                                      .presampling_factor(4)
+                                      .aggregation(Aggregation::CLUSTER)
+                                      .cluster_angle(45.)
+                                      .random_seed(0));
+  CHECK(explicit_precise == precise);
+  // 3. RRHT parameters first, then CGAL ones, in any order: the same normals;
+  // the paper's fast setting is its preset.
+  const auto fast = run(params::least_squares_first(false).number_of_planes(300).point_map(point_map)
+                          .number_of_rotations(2).normal_map(normal_map).adaptive(false));
+  const auto fast_reordered = run(params::normal_map(normal_map).adaptive(false).number_of_rotations(2)
+                                    .point_map(point_map).number_of_planes(300).least_squares_first(false));
   CHECK(fast == fast_reordered);
-  CHECK(fast != defaults); // the parameters are read
+  CHECK(run(params::paper_fast().point_map(point_map).normal_map(normal_map)) == fast);
+  CHECK(fast != precise); // the parameters are read
+  // A parameter appended to a preset wins over the preset's.
+  CHECK(run(params::paper_fast().number_of_planes(CGAL::RRHT::hoeffding_number_of_planes(172)).number_of_rotations(5)
+              .point_map(point_map).normal_map(normal_map)) == precise);
+  CHECK(run(params::paper_precise().least_squares_first(true).adaptive(true).point_map(point_map)
+              .normal_map(normal_map)) == defaults);
   // 4. From an empty chain.
   CHECK(run(params::default_values().point_map(point_map).normal_map(normal_map)) == defaults);
   // 5. Extending a CGAL chain received from elsewhere.
   const auto cgal_chain = CGAL::parameters::point_map(point_map).normal_map(normal_map);
-  CHECK(run(params::extend(cgal_chain).number_of_rotations(2).number_of_planes(300)) == fast);
+  CHECK(run(params::extend(cgal_chain).number_of_rotations(2).number_of_planes(300).least_squares_first(false)
+              .adaptive(false)) == fast);
   CHECK(run(params::extend(cgal_chain)) == defaults);
   // 6. Each RRHT parameter changes the result.
-  const auto base = params::point_map(point_map).normal_map(normal_map);
-  CHECK(run(base.accumulator_slices(10)) != defaults);
-  CHECK(run(base.use_confidence_interval(false)) != defaults);
-  CHECK(run(base.sampling(Sampling::CUBES)) != defaults);
+  const auto base = params::paper_precise().point_map(point_map).normal_map(normal_map);
+  CHECK(run(base.accumulator_slices(10)) != precise);
+  CHECK(run(base.use_confidence_interval(false)) != precise);
+  CHECK(run(base.sampling(Sampling::CUBES)) != precise);
   CHECK(run(base.sampling(Sampling::CUBES).presampling_factor(3)) != run(base.sampling(Sampling::CUBES)));
-  CHECK(run(base.sampling(Sampling::UNIF)) != defaults);
-  CHECK(run(base.aggregation(Aggregation::MEAN)) != defaults);
-  CHECK(run(base.aggregation(Aggregation::BEST)) != defaults);
-  CHECK(run(base.cluster_angle(5.)) != defaults);
-  CHECK(run(base.random_seed(7)) != defaults);
+  CHECK(run(base.sampling(Sampling::UNIF)) != precise);
+  CHECK(run(base.aggregation(Aggregation::MEAN)) != precise);
+  CHECK(run(base.aggregation(Aggregation::BEST)) != precise);
+  CHECK(run(base.cluster_angle(5.)) != precise);
+  CHECK(run(base.random_seed(7)) != precise);
+  CHECK(run(base.adaptive(true)) != precise);
+  CHECK(run(base.least_squares_first(true)) != precise);
+  CHECK(run(base.refit(true)) != precise);
+  CHECK(run(params::extend(cgal_chain).refit(true)) != defaults);
   // 7. An RRHT chain is a CGAL chain: CGAL's own functions take it.
   {
     Pair_cloud<SC> cloud = input;
@@ -351,7 +374,7 @@ TEST_CASE("Same seed, same normals, bit for bit, whatever the concurrency and th
 TEST_CASE("confidence_map: into a Point_set_3 property, the same whatever the threads, 0 where no normal", "[api][confidence]")
 {
   const rrht_test::Cloud truth = noisy_cube(3000);
-  auto run = [&](auto concurrency, int threads) {
+  auto run = [&](auto concurrency, int threads, const auto& np) {
     CGAL::Point_set_3<SC::Point_3> point_set;
     point_set.add_normal_map();
     auto confidence = point_set.add_property_map<double>("confidence", -1.).first;
@@ -362,27 +385,37 @@ TEST_CASE("confidence_map: into a Point_set_3 property, the same whatever the th
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
 #endif
     (void)threads;
-    CGAL::rrht_estimate_normals<decltype(concurrency)>(point_set, 30, params::confidence_map(confidence));
+    CGAL::rrht_estimate_normals<decltype(concurrency)>(point_set, 30, params::extend(np).confidence_map(confidence));
     std::vector<std::pair<SC::Vector_3, double> > out;
     for(auto i : point_set)
       out.emplace_back(point_set.normal(i), confidence[i]);
     return out;
   };
-  const auto sequential = run(CGAL::Sequential_tag(), 1);
-  for(std::size_t i = 0; i < truth.size(); ++i)
+  // The paper's setting, where every normal is a bin's, and the default,
+  // where a quadric's normal may be off every bin of the Hough transform.
+  for(bool paper : { true, false })
   {
-    CHECK(sequential[i].second > 0);
-    CHECK(sequential[i].second <= 1);
-  }
-  for(std::size_t i = truth.size(); i < sequential.size(); ++i)
-  {
-    CHECK(sequential[i].first == SC::Vector_3(CGAL::NULL_VECTOR));
-    CHECK(sequential[i].second == 0);
-  }
+    INFO((paper ? "paper_precise()" : "defaults"));
+    const auto np = paper ? params::paper_precise() : params::least_squares_first(true).adaptive(true);
+    const auto sequential = run(CGAL::Sequential_tag(), 1, np);
+    std::size_t positive = 0;
+    for(std::size_t i = 0; i < truth.size(); ++i)
+    {
+      CHECK(sequential[i].second >= 0);
+      CHECK(sequential[i].second <= 1);
+      positive += sequential[i].second > 0;
+    }
+    CHECK(positive >= (paper ? truth.size() : truth.size() * 99 / 100));
+    for(std::size_t i = truth.size(); i < sequential.size(); ++i)
+    {
+      CHECK(sequential[i].first == SC::Vector_3(CGAL::NULL_VECTOR));
+      CHECK(sequential[i].second == 0);
+    }
 #ifdef CGAL_LINKED_WITH_TBB
-  for(int threads : { 1, 2, 3 })
-    CHECK(run(CGAL::Parallel_tag(), threads) == sequential);
+    for(int threads : { 1, 2, 3 })
+      CHECK(run(CGAL::Parallel_tag(), threads, np) == sequential);
 #endif
+  }
 
   // Collinear points: no plane, so no normal and no confidence.
   CGAL::Point_set_3<SC::Point_3> line;
@@ -412,14 +445,19 @@ TEST_CASE("The callback reports progress, and returning false stops, leaving the
       });
     }
     // Interrupted at the first report, on a cloud large enough for TBB's
-    // default partitioner to hand out ranges of thousands of points.
+    // default partitioner to hand out ranges of thousands of points. By
+    // default, the normals are written in the last of three passes: stopped
+    // in the first, every normal is left unchanged.
+    for(bool paper : { true, false })
     {
+      INFO((paper ? "paper_precise()" : "defaults"));
       Pair_cloud<SC> cloud = to_pairs<SC>(large);
       for(auto& pn : cloud)
         pn.second = untouched;
       std::function<bool(double)> stop = [](double) { return false; };
       CGAL::rrht_estimate_normals<Tag>(
-        cloud, 10, params::extend(pair_maps<SC>).callback(stop).number_of_planes(10).number_of_rotations(1));
+        cloud, 10, params::extend(pair_maps<SC>).callback(stop).number_of_planes(10).number_of_rotations(1)
+                     .least_squares_first(!paper).adaptive(!paper));
       std::size_t estimated = 0, unchanged = 0;
       for(const auto& pn : cloud)
       {
@@ -431,7 +469,7 @@ TEST_CASE("The callback reports progress, and returning false stops, leaving the
           CHECK(pn.second.squared_length() == Approx(1));
         }
       }
-      CHECK(estimated > 0);
+      CHECK((estimated > 0) == paper);
       // Each thread stops after the block of at most 64 points it was on, and
       // may have started one more before the first report.
       CHECK(estimated <= 2 * 64 * threads);
@@ -744,7 +782,10 @@ TEST_CASE("point_id_map: a part of the cloud gives each point whose support it h
   auto with = [](unsigned int k, const auto& np) {
     return [=](std::vector<Identified>& cloud) { CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(cloud, k, np); };
   };
-  const auto np = identified_maps.random_seed(9);
+  const auto defaults = identified_maps.random_seed(9);
+  CHECK(check_part_against_whole(cube, 0.2, with(50, defaults)) > 0.4);
+  CHECK(check_part_against_whole(cube, 0.2, with(30, defaults.neighbor_radius(0.25))) > 0.4);
+  const auto np = defaults.least_squares_first(false).adaptive(false); // the paper's precise setting
   CHECK(check_part_against_whole(cube, 0.2, with(50, np)) > 0.6);
   CHECK(check_part_against_whole(cube, 0.2, with(50, np.sampling(Sampling::CUBES).number_of_planes(200))) > 0.6);
   CHECK(check_part_against_whole(cube, 0.2, with(50, np.sampling(Sampling::UNIF).number_of_planes(200))) > 0.6);
@@ -789,23 +830,25 @@ TEST_CASE("point_id_map: by default the id is the position; support_radius_map i
     same += std::get<1>(shifted[i]) == std::get<1>(with_ids[i]);
   CHECK(same < points.size() / 10);
 
-  // Without refit, the support is the distance to the 40th nearest
-  // neighbor; with it, at least that, and at most three times as large on
-  // this even sampling; least squares first, at most four times.
-  std::vector<Identified> refitted = identified(points), first = identified(points);
-  CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(refitted, 40, identified_maps.refit(true));
-  CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(first, 40, identified_maps.least_squares_first(true));
+  // With the paper's setting, the support is the distance to the 40th
+  // nearest neighbor; with the refit, at least that, and at most three times
+  // as large on this even sampling; least squares first (the default), at
+  // most four times.
+  const auto paper = identified_maps.least_squares_first(false).adaptive(false);
+  std::vector<Identified> plain = identified(points), refitted = identified(points);
+  CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(plain, 40, paper);
+  CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(refitted, 40, paper.refit(true));
   for(std::size_t i = 0; i < points.size(); i += 97)
   {
     std::vector<double> distances;
     for(const SC::Point_3& p : points)
       distances.push_back(std::sqrt(CGAL::squared_distance(p, points[i])));
     std::nth_element(distances.begin(), distances.begin() + 40, distances.end());
-    CHECK(std::get<3>(with_ids[i]) == Approx(distances[40]).epsilon(1e-12));
-    CHECK(std::get<3>(refitted[i]) >= std::get<3>(with_ids[i]));
-    CHECK(std::get<3>(refitted[i]) < 3 * std::get<3>(with_ids[i]));
-    CHECK(std::get<3>(first[i]) >= 2 * std::get<3>(with_ids[i]));
-    CHECK(std::get<3>(first[i]) < 4 * std::get<3>(with_ids[i]));
+    CHECK(std::get<3>(plain[i]) == Approx(distances[40]).epsilon(1e-12));
+    CHECK(std::get<3>(refitted[i]) >= std::get<3>(plain[i]));
+    CHECK(std::get<3>(refitted[i]) < 3 * std::get<3>(plain[i]));
+    CHECK(std::get<3>(with_ids[i]) >= 2 * std::get<3>(plain[i]));
+    CHECK(std::get<3>(with_ids[i]) < 4 * std::get<3>(plain[i]));
   }
 
   // A cloud of at most k points is every point's neighborhood: an infinite
@@ -814,7 +857,7 @@ TEST_CASE("point_id_map: by default the id is the position; support_radius_map i
   CGAL::rrht_estimate_normals<CGAL::Sequential_tag>(few, 40, identified_maps);
   for(const Identified& e : few)
     CHECK(std::isinf(std::get<3>(e)));
-  CGAL::rrht_estimate_normals<CGAL::Sequential_tag>(few, 40, identified_maps.least_squares_first(true));
+  CGAL::rrht_estimate_normals<CGAL::Sequential_tag>(few, 40, paper);
   for(const Identified& e : few)
     CHECK(std::isinf(std::get<3>(e)));
 
@@ -848,7 +891,8 @@ TEST_CASE("neighbor_only_map: those points get nothing written, the others their
   points[11] = SC::Point_3(0.5, std::numeric_limits<double>::infinity(), 0); // only a neighbor, not finite
   for(int setting : { 0, 1, 2 })
   {
-    const auto np = identified_maps.refit(setting == 1).least_squares_first(setting == 2);
+    // The paper's precise setting, with the refit, and the defaults.
+    const auto np = identified_maps.refit(setting == 1).least_squares_first(setting == 2).adaptive(setting == 2);
     std::vector<Identified> all = identified(points), some = identified(points);
     CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(all, 40, np);
     CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(some, 40, np.neighbor_only_map(Beyond_cut{ 0.2 }));

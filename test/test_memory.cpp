@@ -14,14 +14,14 @@
 
 using CGAL::RRHT::Sampling;
 
-TEST_CASE("No allocation per point but the two of CGAL's k-nearest-neighbor query", "[api][memory]")
+TEST_CASE("No allocation per point but the two of CGAL's k-nearest-neighbor query (and the defaults' neighbor lists)", "[api][memory]")
 {
   if(!RRHT_TEST_COUNTS_ALLOCATIONS)
   {
     WARN("SKIPPED: allocations are not counted under AddressSanitizer");
     return;
   }
-  auto allocations_per_point = [](unsigned int k, double radius, Sampling sampling) {
+  auto allocations_per_point = [](unsigned int k, double radius, Sampling sampling, bool paper = true) {
     auto count = [&](std::size_t n) {
       rrht_test::Cloud cloud = rrht_test::cube(n, 21);
       rrht_test::add_noise(cloud, 0.2, 22);
@@ -31,7 +31,9 @@ TEST_CASE("No allocation per point but the two of CGAL's k-nearest-neighbor quer
         CGAL::RRHT::parameters::point_map(rrht_test::Point_of_sample())
           .normal_map(rrht_test::Normal_of_sample())
           .neighbor_radius(radius)
-          .sampling(sampling));
+          .sampling(sampling)
+          .least_squares_first(!paper)
+          .adaptive(!paper));
       return double(rrht_test::number_of_allocations() - before);
     };
     // Set-up costs cancel out; what is left is the cost of one more point.
@@ -47,4 +49,8 @@ TEST_CASE("No allocation per point but the two of CGAL's k-nearest-neighbor quer
     const double ball = allocations_per_point(0, 0.2, sampling);
     CHECK(ball <= 0.1);
   }
+  // The defaults keep the neighbors of each point between their passes: one
+  // list more per point.
+  CHECK(allocations_per_point(30, 0., Sampling::POINTS, false) <= 3.1);
+  CHECK(allocations_per_point(0, 0.2, Sampling::POINTS, false) <= 1.1);
 }

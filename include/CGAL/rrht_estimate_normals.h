@@ -68,6 +68,20 @@ namespace CGAL {
    the neighbors, or spatially uniformly in the neighborhood ball to resist
    density variations.
 
+   By default, the Hough transform runs only where it is needed
+   (`least_squares_first` and `adaptive`, beyond the paper): where the
+   neighborhood of a point is one smooth sheet within the noise, or one side
+   of a thin part, the normal is that of a quadric fitted to it by least
+   squares, as `CGAL::jet_estimate_normals()` does; elsewhere, as along sharp
+   features, it is that of the Hough transform, run with the paper's fast
+   setting and again with its precise setting where the confidence of the
+   first is low. The user manual compares its accuracy and time with the
+   paper's settings and jet fitting's. The paper's settings are one call
+   away: `CGAL::RRHT::parameters::paper_precise()` (T_R = 691, n_rot = 5,
+   the defaults of every other parameter) and
+   `CGAL::RRHT::parameters::paper_fast()` (T_R = 300, n_rot = 2), chains to
+   go on with any other parameter.
+
    The output normals are unit vectors, randomly oriented (use
    `CGAL::mst_orient_normals()` to orient them). Where no plane can be formed
    (fewer than 3 distinct points in the neighborhood, all of them collinear,
@@ -128,9 +142,11 @@ namespace CGAL {
        \cgalParamExtra{It is called after every block of 64 points with the current advancement (between 0. and
                        1.), and with 1. at the end. If it returns `true`, then the
                        algorithm continues its execution normally; if it returns
-                       `false`, the algorithm is stopped and the remaining normals are left unchanged (with
+                       `false`, the algorithm is stopped and the remaining normals are left unchanged. With
+                       `least_squares_first` (the default), normals are written in the last of three passes, the last
+                       third of the advancement: stopped before, it leaves every normal unchanged. Without it, with
                        `refit`, whose second pass is the second half of the advancement, the points that pass did not
-                       reach keep their RRHT normal).}
+                       reach keep their RRHT normal.}
        \cgalParamExtra{The callback will be copied and therefore needs to be lightweight.}
        \cgalParamExtra{When `CGAL::Parallel_tag` is used, the `callback` is called from the worker threads,
                        one at a time, and shouldn't access or modify the variables that are parameters of the algorithm.}
@@ -217,7 +233,7 @@ namespace CGAL {
                        the ROC curve of 1 - confidence is 0.94 to 0.99, see the user manual). Noise, finer
                        accumulators and smaller neighborhoods spread the votes and lower it evenly: compare
                        values within a cloud and a setting (on a cube of 100k points with 0.2% noise, with
-                       the defaults, the median is 0.16 on the faces and 0.04 within 1% of the diagonal of
+                       `paper_precise()`, the median is 0.16 on the faces and 0.04 within 1% of the diagonal of
                        an edge). A null normal has confidence 0. Writing it costs no measurable time.}
      \cgalParamNEnd
 
@@ -225,12 +241,16 @@ namespace CGAL {
        \cgalParamDescription{whether to spend the draws where the normals are uncertain (beyond the paper, after the
                              future work of its Section 7)}
        \cgalParamType{bool}
-       \cgalParamDefault{`false`}
-       \cgalParamExtra{Each point is first estimated with the paper's fast setting (at most 300 planes, 2
+       \cgalParamDefault{`true` (`false` in `CGAL::RRHT::parameters::paper_precise()` and `paper_fast()`)}
+       \cgalParamExtra{With `least_squares_first`, this is the Hough transform run where the least-squares
+                       fit is not kept. Each point is first estimated with the paper's fast setting (at most 300 planes, 2
                        rotations, `CGAL::RRHT::Sampling::POINTS`). Where the confidence of that normal (see
                        `confidence_map`) is below 0.09, it is estimated again with `number_of_planes` and
-                       `number_of_rotations` (the precise setting by default): with `CUBES` (`UNIF` if `sampling`
-                       is `UNIF`) where the confidence is below 0.045, as along sharp features, else with `POINTS`.
+                       `number_of_rotations` (the precise setting by default), with `POINTS`; where the
+                       confidence is below 0.045, as along sharp features, also with `CUBES` (`UNIF` if `sampling` is
+                       `UNIF`), whose normal is kept unless that with `POINTS` has a higher confidence (spatial
+                       drawing resists the uneven densities of the two sides of a sharp feature, but draws mostly
+                       outliers where they fill the ball).
                        Each normal is thus the normal that one of these plain settings gives at the point, and the
                        result stays the same for any number of threads. The confidence written is that of the
                        normal kept. `sampling` is otherwise ignored. The thresholds are tuned on the benchmark's
@@ -269,13 +289,15 @@ namespace CGAL {
        \cgalParamDescription{whether to keep the normal of jet fitting's quadric where the neighborhood is one smooth sheet
                              within the noise, and run the Hough transform only at the other points (beyond the paper)}
        \cgalParamType{bool}
-       \cgalParamDefault{`false`}
+       \cgalParamDefault{`true` (`false` in `CGAL::RRHT::parameters::paper_precise()` and `paper_fast()`)}
        \cgalParamExtra{A first pass fits, by least squares, a quadric height field to all the n neighbors of each point
                        in the frame of their principal axes, as `CGAL::jet_estimate_normals()` does, and estimates the
                        noise deviation of its residuals from their nearest quarter, relative to the neighborhood's
                        radius r; where that deviation is more than 1.5 times the residuals' root mean square (bimodal
                        residuals: the two sides of a thin part well inside the neighborhood), the quadric of the point's
-                       own side (found by the split below) replaces it. The quadric is one smooth sheet where the mean
+                       own side (found by the split below) replaces it, and so it does, split along the principal normal
+                       of the nearest quarter of the neighbors, where that normal is more than 10 degrees from the
+                       quadric's in a neighborhood of at least 40 points (the other side tilting the principal axes). The quadric is one smooth sheet where the mean
                        square of its residuals exceeds the noise variance of the scan around the point by at most
                        (0.03 r)^2: that variance is the square of the first quartile of the deviations estimated at its
                        neighbors, times 1 + 65.5 / (n - 6), as both estimates scatter more with fewer neighbors (the
@@ -415,9 +437,9 @@ void rrht_estimate_normals(PointRange& points,
   check(cluster_angle >= 0 && cluster_angle <= 180, "cluster_angle must be from 0 to 180 degrees");
   settings.cos_cluster_angle = std::cos(cluster_angle * CGAL_PI / 180.);
   settings.seed = choose_parameter(get_parameter(np, internal_np::random_seed), 0u);
-  const bool adaptive = choose_parameter(get_parameter(np, rrht_np::adaptive), false);
+  const bool adaptive = choose_parameter(get_parameter(np, rrht_np::adaptive), true);
   const bool refit = choose_parameter(get_parameter(np, rrht_np::refit), false);
-  const bool least_squares_first = choose_parameter(get_parameter(np, rrht_np::least_squares_first), false);
+  const bool least_squares_first = choose_parameter(get_parameter(np, rrht_np::least_squares_first), true);
   check(!least_squares_first ||
           std::size_t(std::distance(points.begin(), points.end())) <= (std::numeric_limits<std::uint32_t>::max)(),
         "least_squares_first handles at most 2^32 - 1 points at once: process larger clouds in tiles");

@@ -20,9 +20,12 @@ import numpy.typing as npt
 
 from . import _core
 
-__all__ = ["estimate_normals", "orient_normals", "SAMPLINGS", "AGGREGATIONS"]
+__all__ = ["estimate_normals", "orient_normals", "SETTINGS", "SAMPLINGS", "AGGREGATIONS"]
 __version__ = "0.1.0"
 
+#: The values of ``setting``: least squares first with the adaptive Hough transform
+#: (the default), and the paper's precise and fast settings (Section 6).
+SETTINGS = ("default", "paper_precise", "paper_fast")
 #: The values of ``sampling``: RRHT_Points, RRHT_Cubes, RRHT_Unif (paper, Section 5).
 SAMPLINGS = ("points", "cubes", "unif")
 #: The values of ``aggregation``: RRHT_m, RRHT_b, RRHT_c (paper, Section 4).
@@ -36,9 +39,10 @@ def estimate_normals(
     points: npt.ArrayLike,
     k: int = ...,
     *,
+    setting: str = ...,
     radius: Optional[float] = ...,
     planes: Optional[int] = ...,
-    rotations: int = ...,
+    rotations: Optional[int] = ...,
     slices: int = ...,
     confidence_interval: bool = ...,
     sampling: str = ...,
@@ -46,7 +50,8 @@ def estimate_normals(
     aggregation: str = ...,
     cluster_angle: float = ...,
     seed: int = ...,
-    adaptive: bool = ...,
+    least_squares_first: Optional[bool] = ...,
+    adaptive: Optional[bool] = ...,
     refit: bool = ...,
     ids: Optional[npt.ArrayLike] = ...,
     neighbors: Optional[npt.ArrayLike] = ...,
@@ -65,9 +70,10 @@ def estimate_normals(
     points: npt.ArrayLike,
     k: int = ...,
     *,
+    setting: str = ...,
     radius: Optional[float] = ...,
     planes: Optional[int] = ...,
-    rotations: int = ...,
+    rotations: Optional[int] = ...,
     slices: int = ...,
     confidence_interval: bool = ...,
     sampling: str = ...,
@@ -75,7 +81,8 @@ def estimate_normals(
     aggregation: str = ...,
     cluster_angle: float = ...,
     seed: int = ...,
-    adaptive: bool = ...,
+    least_squares_first: Optional[bool] = ...,
+    adaptive: Optional[bool] = ...,
     refit: bool = ...,
     ids: Optional[npt.ArrayLike] = ...,
     neighbors: Optional[npt.ArrayLike] = ...,
@@ -93,9 +100,10 @@ def estimate_normals(
     points: npt.ArrayLike,
     k: int = 100,
     *,
+    setting: str = "default",
     radius: Optional[float] = None,
     planes: Optional[int] = None,
-    rotations: int = 5,
+    rotations: Optional[int] = None,
     slices: int = 15,
     confidence_interval: bool = True,
     sampling: str = "points",
@@ -103,7 +111,8 @@ def estimate_normals(
     aggregation: str = "cluster",
     cluster_angle: float = 45.0,
     seed: int = 0,
-    adaptive: bool = False,
+    least_squares_first: Optional[bool] = None,
+    adaptive: Optional[bool] = None,
     refit: bool = False,
     ids: Optional[npt.ArrayLike] = None,
     neighbors: Optional[npt.ArrayLike] = None,
@@ -121,7 +130,14 @@ def estimate_normals(
     Hough accumulator of directions; the normal is the mean normal of the
     most voted bin, so that near an edge the plane of the point's own side
     wins. This is done in ``rotations`` randomly rotated accumulators, whose
-    normals are combined by ``aggregation``. The defaults are those of
+    normals are combined by ``aggregation``. By default, the Hough transform
+    runs only where it is needed: where the neighborhood of a point is one
+    smooth sheet within the noise, or one side of a thin part, the normal is
+    that of a quadric fitted by least squares, as jet fitting's
+    (``least_squares_first``); elsewhere, as along sharp features, it is the
+    Hough transform's, run cheaply first and again where its confidence is
+    low (``adaptive``). ``setting="paper_precise"`` and ``"paper_fast"``
+    run the paper's settings instead. The defaults are those of
     ``CGAL::rrht_estimate_normals()``; the paper's names are in brackets.
 
     Parameters
@@ -134,6 +150,14 @@ def estimate_normals(
         The number of neighbors [K]: a point's neighborhood is the point and
         its ``k`` nearest neighbors. With ``radius``, the cap on the number
         of neighbors taken from the ball (0: no cap).
+    setting : {"default", "paper_precise", "paper_fast"}, default "default"
+        The defaults of ``least_squares_first``, ``adaptive``, ``planes``
+        and ``rotations``, which win where given: ``"default"``, least
+        squares first with the adaptive Hough transform; ``"paper_precise"``
+        (``CGAL::RRHT::parameters::paper_precise()``), the Hough transform
+        at every point with the Hoeffding bound of planes and 5 rotations;
+        ``"paper_fast"`` (``paper_fast()``), with 300 planes and 2
+        rotations.
     radius : float, optional
         The radius of a spherical neighborhood [r]; default: none (``k``
         nearest neighbors). A ball with more than ``k`` other points keeps
@@ -142,9 +166,11 @@ def estimate_normals(
     planes : int, optional
         The largest number of triples drawn per accumulator [T_R], from 1 to
         100 000 000; default: the Hoeffding bound of eq. 7 for the
-        accumulator's number of bins (691 with 15 slices).
-    rotations : int, default 5
-        The number of randomly rotated accumulators [n_rot], 1 to 100 000.
+        accumulator's number of bins (691 with 15 slices), 300 with
+        ``setting="paper_fast"``.
+    rotations : int, optional
+        The number of randomly rotated accumulators [n_rot], 1 to 100 000;
+        default: 5, 2 with ``setting="paper_fast"``.
     slices : int, default 15
         The number of slices of the sphere in the accumulator [n_phi], 1 to
         1000.
@@ -170,14 +196,24 @@ def estimate_normals(
         row): the same input and seed give the same normals, bit for bit, as
         ``rrht_normals`` and ``CGAL::rrht_estimate_normals()``, whatever the
         number of threads.
-    adaptive : bool, default False
-        The adaptive setting (beyond the paper): every point is estimated
+    least_squares_first : bool, optional
+        Least squares first (beyond the paper), true by default, false with
+        the paper's settings: a quadric is fitted by least squares to the
+        neighbors of each point, as jet fitting does, and its normal kept
+        where the neighborhood is one smooth sheet within the noise around
+        the point (or, where it holds the two sides of a thin part, the
+        quadric of the point's own side); the Hough transform runs at the
+        other points, as along sharp features. See the user manual.
+    adaptive : bool, optional
+        The adaptive setting (beyond the paper), true by default, false with
+        the paper's settings: the Hough transform at a point is run
         with the fast setting (at most 300 planes, 2 rotations), and where
         that normal's confidence is below 0.09 again with ``planes`` and
-        ``rotations``, drawing spatially ("cubes", or "unif" if ``sampling``
-        is "unif") where it is below 0.045, as along sharp features. On
-        noisy CAD shapes: fewer wrong normals than the defaults in less than
-        half their time. ``sampling`` is otherwise ignored.
+        ``rotations``; where it is below 0.045, as along sharp features,
+        also drawing spatially ("cubes", or "unif" if ``sampling`` is
+        "unif"), the normal of higher confidence being kept. On
+        noisy CAD shapes: fewer wrong normals than the paper's precise setting
+        in less than half its time. ``sampling`` is otherwise ignored.
     refit : bool, default False
         Refit each normal by least squares (beyond the paper): a quadric
         height field over its plane, fitted to the neighbors within 2.5
@@ -245,9 +281,14 @@ def estimate_normals(
         value flags a normal to distrust; noise lowers it evenly over a
         cloud, so compare values within a cloud. 0 where the normal is zero.
     support : numpy.ndarray, shape (N,), float64
-        Only with ``return_support``: the distance to the ``k``-th neighbor
-        (or ``radius``); with ``refit``, the largest distance to a neighbor
-        plus that neighbor's own. 0 for a non-finite point. The arrays come
+        Only with ``return_support``: the radius of the ball that holds
+        every point the normal depends on. With ``least_squares_first`` (the
+        default), whose tests read the neighborhoods of the point's
+        neighbors and of theirs, the largest distance to one of those
+        points plus the radius of its neighborhood; with the paper's settings,
+        the distance to the ``k``-th neighbor (or ``radius``), and with
+        ``refit``, the largest distance to a neighbor plus that neighbor's
+        own. 0 for a non-finite point. The arrays come
         in this order, as those of ``numpy.unique``: normals, then
         confidence and support if asked for.
 
@@ -263,7 +304,7 @@ def estimate_normals(
         of ``ids`` and ``neighbor_ids`` is given with ``neighbors``, if a
         parameter is out of its
         range (with the message of ``CGAL::rrht_estimate_normals()``), if
-        ``sampling`` or ``aggregation`` is an unknown name, or if ``orient``
+        ``setting``, ``sampling`` or ``aggregation`` is an unknown name, or if ``orient``
         or ``viewpoint`` is wrong (as in :func:`orient_normals`), both are
         given, or ``orient`` is ``"consistent"`` with ``neighbors``. All
         of this is checked before the estimation starts.
@@ -290,11 +331,13 @@ def estimate_normals(
     """
     array = _points(points, "points", "N")
     extra = None if neighbors is None else _points(neighbors, "neighbors", "M")
+    paper = _name(setting, SETTINGS, "setting") != "default"
+    fast = setting == "paper_fast"
     arguments = dict(
         k=_integer(k, "k"),
         radius=None if radius is None else float(radius),
-        planes=None if planes is None else _integer(planes, "planes"),
-        rotations=_integer(rotations, "rotations"),
+        planes=_integer(planes, "planes") if planes is not None else 300 if fast else None,
+        rotations=_integer(rotations, "rotations") if rotations is not None else 2 if fast else 5,
         slices=_integer(slices, "slices"),
         confidence_interval=bool(confidence_interval),
         sampling=_name(sampling, SAMPLINGS, "sampling"),
@@ -302,7 +345,8 @@ def estimate_normals(
         aggregation=_name(aggregation, AGGREGATIONS, "aggregation"),
         cluster_angle=float(cluster_angle),
         seed=_integer(seed, "seed"),
-        adaptive=bool(adaptive),
+        least_squares_first=not paper if least_squares_first is None else bool(least_squares_first),
+        adaptive=not paper if adaptive is None else bool(adaptive),
         refit=bool(refit),
         threads=None if threads is None else _integer(threads, "threads"),
         return_confidence=bool(return_confidence),

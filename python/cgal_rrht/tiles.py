@@ -45,7 +45,7 @@ from typing import Any, Dict, List, Optional, Sequence, Tuple
 import numpy as np
 import numpy.typing as npt
 
-from . import AGGREGATIONS, SAMPLINGS, _estimation_orientation, estimate_normals
+from . import AGGREGATIONS, SAMPLINGS, SETTINGS, _estimation_orientation, estimate_normals
 from .point_files import PointFile, PointFileError, ply_header, write_points
 
 __all__ = ["run", "split", "list_tiles", "TileError", "PointFileError", "Tile"]
@@ -298,7 +298,7 @@ def run(input: "os.PathLike[str] | str", output: "os.PathLike[str] | str", *, sc
     halo : float, optional
         The first margin loaded around each tile; default: three times the
         neighborhood radius that the density of the tiles suggests (five
-        with ``refit``). Too small costs time, never accuracy: the points it
+        with ``least_squares_first``, the default, or ``refit``). Too small costs time, never accuracy: the points it
         fails are estimated again. The halo's points are only neighbors:
         they cost their reading and their place in the kd-tree.
     progress : bool, default True
@@ -319,7 +319,7 @@ def run(input: "os.PathLike[str] | str", output: "os.PathLike[str] | str", *, sc
         normals, viewpoint=positions)``, which gives the same result.
     **estimator
         The parameters of ``cgal_rrht.estimate_normals()`` (``k``,
-        ``radius``, ``planes``, ``refit``, ``seed``...).
+        ``setting``, ``radius``, ``planes``, ``refit``, ``seed``...).
 
     Returns
     -------
@@ -413,7 +413,8 @@ def _run_tiles(paths: List[Path], output: Path, scheduler: Optional[str], worker
 
 
 def _first_halo(tiles: Sequence[Tile], options: Dict[str, Any]) -> float:
-    """Three times the neighborhood radius that the median density of the tiles in xy gives (five with refit)."""
+    """Three times the neighborhood radius that the median density of the tiles in xy gives, five with least squares
+    first (the default), whose supports reach the neighborhoods of the neighbors' neighbors, or with refit."""
     if options.get("radius"):
         reach = float(options["radius"])
     else:
@@ -421,7 +422,10 @@ def _first_halo(tiles: Sequence[Tile], options: Dict[str, Any]) -> float:
                      for t in tiles if np.all(np.isfinite(t.lower))]
         k = options.get("k", 100)
         reach = math.sqrt((k + 1) / (math.pi * float(np.median(densities)))) if densities else 1.0
-    return (5 if options.get("refit") else 3) * reach
+    least_squares_first = options.get("least_squares_first")
+    if least_squares_first is None:
+        least_squares_first = options.get("setting", "default") == "default"
+    return (5 if least_squares_first or options.get("refit") else 3) * reach
 
 
 # --------------------------------------------------------------------------
@@ -570,15 +574,22 @@ def _parser() -> argparse.ArgumentParser:
     estimator = parser.add_argument_group("the estimator (as rrht_normals and cgal_rrht.estimate_normals)")
     estimator.add_argument("-k", "--neighbors", type=int, default=100, help="K, the number of neighbors (default 100)")
     estimator.add_argument("-r", "--radius", type=float, help="r, the neighborhood ball radius")
-    estimator.add_argument("--planes", type=int, help="T_R, the most planes per accumulator (default: eq. 7)")
-    estimator.add_argument("--rotations", type=int, default=5, help="n_rot (default 5)")
+    estimator.add_argument("--planes", type=int,
+                           help="T_R, the most planes per accumulator (default: eq. 7, 300 with --setting paper_fast)")
+    estimator.add_argument("--setting", choices=SETTINGS, default="default",
+                           help="least squares first with the adaptive Hough transform (default), or the paper's "
+                           "precise or fast setting")
+    estimator.add_argument("--rotations", type=int, help="n_rot (default 5, 2 with --setting paper_fast)")
     estimator.add_argument("--slices", type=int, default=15, help="n_phi (default 15)")
     estimator.add_argument("--sampling", choices=SAMPLINGS, default="points")
     estimator.add_argument("--presampling", type=int, default=4, help="c (default 4)")
     estimator.add_argument("--aggregation", choices=AGGREGATIONS, default="cluster")
     estimator.add_argument("--cluster-angle", type=float, default=45.0, help="a_cluster in degrees (default 45)")
     estimator.add_argument("--no-confidence-interval", action="store_true", help="do not stop early (eq. 10)")
-    estimator.add_argument("--adaptive", action="store_true", help="the adaptive setting")
+    estimator.add_argument("--adaptive", action="store_const", const=True,
+                           help="with a paper setting, the adaptive setting (part of the default)")
+    estimator.add_argument("--least-squares-first", action="store_const", const=True,
+                           help="with a paper setting, least squares first (part of the default)")
     estimator.add_argument("--refit", action="store_true", help="refit each normal by least squares")
     estimator.add_argument("--seed", type=int, default=0, help="random seed (default 0)")
     return parser
@@ -618,11 +629,12 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
         orientation = dict([args.orient]) if args.orient else {}
         summary = run(args.input, args.output, scheduler=args.scheduler, workers=args.workers, threads=args.threads,
                       tile_size=args.tile_size, halo=args.halo, progress=not args.quiet,
-                      return_confidence=args.confidence, **orientation, k=args.neighbors, radius=args.radius, planes=args.planes,
+                      return_confidence=args.confidence, **orientation, k=args.neighbors, setting=args.setting,
+                      radius=args.radius, planes=args.planes,
                       rotations=args.rotations, slices=args.slices, sampling=args.sampling,
                       presampling=args.presampling, aggregation=args.aggregation, cluster_angle=args.cluster_angle,
                       confidence_interval=not args.no_confidence_interval, adaptive=args.adaptive,
-                      refit=args.refit, seed=args.seed)
+                      least_squares_first=args.least_squares_first, refit=args.refit, seed=args.seed)
     except (TileError, PointFileError, ValueError, TypeError) as error:
         print(f"error: {error}", file=sys.stderr)
         return 2

@@ -179,6 +179,7 @@ struct Options
   std::optional<long long> planes; // none: the Hoeffding bound of the accumulator
   long long rotations, slices, presampling;
   bool confidence_interval;
+  bool least_squares_first;
   bool adaptive;
   bool refit;
   CGAL::RRHT::Sampling sampling;
@@ -282,6 +283,7 @@ py::tuple estimate_normals(const py::array_t<double, py::array::c_style>& points
                     .number_of_rotations(options.rotations)
                     .accumulator_slices(options.slices)
                     .use_confidence_interval(options.confidence_interval)
+                    .least_squares_first(options.least_squares_first)
                     .adaptive(options.adaptive)
                     .refit(options.refit)
                     .sampling(options.sampling)
@@ -363,7 +365,8 @@ PYBIND11_MODULE(_core, m)
        const std::optional<py::array_t<std::uint64_t, py::array::c_style>>& ids, long long k, std::optional<double> radius,
        std::optional<long long> planes, long long rotations, long long slices, bool confidence_interval,
        const std::string& sampling, long long presampling, const std::string& aggregation, double cluster_angle,
-       long long seed, bool adaptive, bool refit, std::optional<long long> threads, bool return_confidence,
+       long long seed, bool least_squares_first, bool adaptive, bool refit, std::optional<long long> threads,
+       bool return_confidence,
        bool return_support, const std::function<void(double)>& progress) {
       Options options;
       options.k = count<unsigned int>(k, "k");
@@ -386,6 +389,7 @@ PYBIND11_MODULE(_core, m)
         "aggregation");
       options.cluster_angle = cluster_angle;
       options.seed = count<unsigned int>(seed, "seed");
+      options.least_squares_first = least_squares_first;
       options.adaptive = adaptive;
       options.refit = refit;
       options.threads = thread_count(threads);
@@ -395,7 +399,7 @@ PYBIND11_MODULE(_core, m)
     py::arg("k"), py::arg("radius").none(true), py::arg("planes").none(true),
     py::arg("rotations"), py::arg("slices"), py::arg("confidence_interval"), py::arg("sampling"),
     py::arg("presampling"), py::arg("aggregation"), py::arg("cluster_angle"), py::arg("seed"),
-    py::arg("adaptive"), py::arg("refit"), py::arg("threads").none(true), py::arg("return_confidence"),
+    py::arg("least_squares_first"), py::arg("adaptive"), py::arg("refit"), py::arg("threads").none(true), py::arg("return_confidence"),
     py::arg("return_support"), py::arg("progress").none(true),
     "The estimation behind cgal_rrht.estimate_normals(), whose documentation says what each argument is.\n"
     "`points` is a C-contiguous float64 array (N, 3), read in place, `neighbors` None or another (M, 3),\n"

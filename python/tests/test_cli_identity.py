@@ -14,18 +14,24 @@ from conftest import DATA
 # (Python keyword arguments, the same for rrht_normals)
 SETTINGS = [
     ({}, []),
-    (dict(planes=300, rotations=2, sampling="cubes"), ["--planes", "300", "--rotations", "2", "--sampling", "cubes"]),
-    (dict(planes=300, rotations=2, sampling="unif", aggregation="mean"),
-     ["--planes", "300", "--rotations", "2", "--sampling", "unif", "--aggregation", "mean"]),
+    (dict(setting="paper_fast", sampling="cubes"), ["--setting", "paper_fast", "--sampling", "cubes"]),
+    (dict(setting="paper_fast", sampling="unif", aggregation="mean"),
+     ["--setting", "paper_fast", "--sampling", "unif", "--aggregation", "mean"]),
+    (dict(setting="paper_fast", rotations=3), ["--setting", "paper_fast", "--rotations", "3"]),
+    (dict(setting="paper_precise", planes=300, rotations=2), ["--setting", "paper_precise", "--planes", "300",
+                                                              "--rotations", "2"]),
     (dict(radius=0.05, k=0, seed=7), ["--radius", "0.05", "-k", "0", "--seed", "7"]),
-    (dict(radius=0.05, k=30, aggregation="best", slices=12),
-     ["--radius", "0.05", "-k", "30", "--aggregation", "best", "--slices", "12"]),
+    (dict(setting="paper_precise", radius=0.05, k=30, aggregation="best", slices=12),
+     ["--setting", "paper_precise", "--radius", "0.05", "-k", "30", "--aggregation", "best", "--slices", "12"]),
     (dict(k=18, confidence_interval=False, cluster_angle=30.0, threads=1),
      ["-k", "18", "--no-confidence-interval", "--cluster-angle", "30", "--threads", "1"]),
-    (dict(adaptive=True), ["--adaptive"]),
-    (dict(adaptive=True, k=50, rotations=3, sampling="unif"), ["--adaptive", "-k", "50", "--rotations", "3", "--sampling", "unif"]),
+    (dict(setting="paper_precise", adaptive=True), ["--setting", "paper_precise", "--adaptive"]),
+    (dict(setting="paper_precise", adaptive=True, k=50, rotations=3, sampling="unif"),
+     ["--setting", "paper_precise", "--adaptive", "-k", "50", "--rotations", "3", "--sampling", "unif"]),
+    (dict(setting="paper_precise", least_squares_first=True), ["--setting", "paper_precise", "--least-squares-first"]),
     (dict(refit=True), ["--refit"]),
-    (dict(refit=True, adaptive=True, radius=0.05, k=30), ["--refit", "--adaptive", "--radius", "0.05", "-k", "30"]),
+    (dict(setting="paper_precise", refit=True, adaptive=True, radius=0.05, k=30),
+     ["--setting", "paper_precise", "--refit", "--adaptive", "--radius", "0.05", "-k", "30"]),
 ]
 
 

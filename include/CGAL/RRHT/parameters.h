@@ -64,7 +64,7 @@ CGAL_RRHT_NAMED_PARAMETERS(CGAL_RRHT_DECLARE_TAG)
 ///   `accumulator_slices()`, `number_of_rotations()`,
 ///   `use_confidence_interval()`, `sampling()`, `presampling_factor()`,
 ///   `aggregation()`, `cluster_angle()`, `confidence_map()`, `adaptive()`, `refit()`,
-///   `point_id_map()`, `support_radius_map()` and `neighbor_only_map()`, and
+///   `least_squares_first()`, `point_id_map()`, `support_radius_map()` and `neighbor_only_map()`, and
 ///   those of `CGAL::rrht_orient_normals()`: `direction()`, `viewpoint()` and
 ///   `viewpoint_map()`.
 ///
@@ -158,6 +158,7 @@ struct Named_function_parameters
 /// params::point_map(pm).normal_map(nm).number_of_planes(300).sampling(CGAL::RRHT::Sampling::CUBES)
 /// params::sampling(CGAL::RRHT::Sampling::CUBES).neighbor_radius(0.1).normal_map(nm)
 /// params::extend(np).number_of_rotations(2)   // np: any CGAL named-parameter chain
+/// params::paper_fast().point_map(pm).normal_map(nm)   // the paper's fast setting
 /// \endcode
 ///
 /// Each of these functions is named after a named parameter, takes its value
@@ -167,8 +168,11 @@ struct Named_function_parameters
 /// (`number_of_planes()`, `accumulator_slices()`, `number_of_rotations()`,
 /// `use_confidence_interval()`, `sampling()`, `presampling_factor()`,
 /// `aggregation()`, `cluster_angle()`, `confidence_map()`, `adaptive()`, `refit()`,
-/// `point_id_map()`, `support_radius_map()`, `neighbor_only_map()`,
+/// `least_squares_first()`, `point_id_map()`, `support_radius_map()`, `neighbor_only_map()`,
 /// `direction()`, `viewpoint()`, `viewpoint_map()`).
+///
+/// Two more start a chain with the paper's settings: `paper_precise()` and
+/// `paper_fast()`.
 /// \ingroup PkgRRHTRef
 namespace parameters {
 
@@ -214,6 +218,36 @@ inline Default_named_parameters default_values() { return Default_named_paramete
 CGAL_RRHT_NAMED_PARAMETERS(CGAL_RRHT_FREE_FUNCTION)
 #undef CGAL_RRHT_FREE_FUNCTION
 #undef CGAL_RRHT_NAMED_PARAMETERS
+
+/// The type of `paper_precise()`.
+typedef RRHT::Named_function_parameters<bool, RRHT::internal_np::adaptive_t,
+                                        RRHT::Named_function_parameters<bool, RRHT::internal_np::least_squares_first_t> >
+  Paper_precise_parameters;
+
+/// The paper's precise setting (Section 6: T_R from eq. 7, 691 for 15 slices,
+/// and n_rot = 5, with `CGAL::RRHT::Sampling::POINTS` and
+/// `CGAL::RRHT::Aggregation::CLUSTER`): the Hough transform at every point,
+/// without the least-squares fit or the adaptive setting that
+/// `CGAL::rrht_estimate_normals()` runs by default. A chain to go on with any
+/// parameter, e.g. `paper_precise().sampling(CGAL::RRHT::Sampling::CUBES)`
+/// for RRHT_Cubes; a parameter appended later wins.
+/// \return a chain that holds `least_squares_first(false)` and `adaptive(false)`
+inline Paper_precise_parameters paper_precise() { return least_squares_first(false).adaptive(false); }
+
+/// The type of `paper_fast()`.
+typedef RRHT::Named_function_parameters<
+  unsigned int, RRHT::internal_np::number_of_rotations_t,
+  RRHT::Named_function_parameters<std::size_t, RRHT::internal_np::number_of_planes_t, Paper_precise_parameters> >
+  Paper_fast_parameters;
+
+/// The paper's fast setting (Section 6: T_R = 300 and n_rot = 2), otherwise
+/// as `paper_precise()`.
+/// \return a chain that holds those of `paper_precise()`, `number_of_planes(300)`
+///         and `number_of_rotations(2)`
+inline Paper_fast_parameters paper_fast()
+{
+  return paper_precise().number_of_planes(std::size_t(300)).number_of_rotations(2u);
+}
 
 /// \cond SKIP_IN_MANUAL
 namespace internal {

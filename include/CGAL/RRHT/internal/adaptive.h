@@ -24,12 +24,14 @@ namespace internal {
 /// - `cheap`, the paper's fast setting (at most 300 planes, 2 rotations,
 ///   RRHT_Points), everywhere;
 /// - where the cheap normal's confidence is below `recheck_below`, that
-///   normal is replaced: by `spatial`'s, the parameters given (T_R and
-///   n_rot) with RRHT_Cubes (RRHT_Unif if that was the sampling asked for),
-///   where the confidence is below `spatial_below` too, which happens along
-///   sharp features, where spatial sampling resists the uneven density of
-///   the two sides; else by `precise`'s, the parameters given with
-///   RRHT_Points, which happens where noise scattered the few cheap votes.
+///   normal is replaced by `precise`'s, the parameters given (T_R and
+///   n_rot) with RRHT_Points, which happens where noise scattered the few
+///   cheap votes; where the confidence is below `spatial_below` too, which
+///   happens along sharp features, by `spatial`'s instead, the parameters
+///   given with RRHT_Cubes (RRHT_Unif if that was the sampling asked for),
+///   unless `precise`'s confidence is higher: spatial sampling resists the
+///   uneven density of the two sides of a feature, but draws mostly
+///   outliers where they fill the ball.
 /// So a normal of the adaptive setting is, bit for bit, the normal that one
 /// of these plain settings gives at that point.
 struct Adaptive_stages

@@ -95,8 +95,14 @@ inline Estimated_normal recheck(std::uint64_t id, const Estimated_normal& cheap,
 {
   if(cheap.confidence >= Adaptive_stages::recheck_below)
     return cheap;
-  return estimate_normal_of_neighborhood(
-    id, cheap.confidence < Adaptive_stages::spatial_below ? stages.spatial : stages.precise, scratch);
+  const Estimated_normal precise = estimate_normal_of_neighborhood(id, stages.precise, scratch);
+  if(cheap.confidence >= Adaptive_stages::spatial_below)
+    return precise;
+  // Spatial drawing resists the uneven densities of the two sides of a sharp
+  // feature, but where outliers or heavy noise fill the ball it draws them
+  // most: the one whose votes agree more wins.
+  const Estimated_normal spatial = estimate_normal_of_neighborhood(id, stages.spatial, scratch);
+  return precise.confidence > spatial.confidence ? precise : spatial;
 }
 
 /// The normal of the neighborhood in `scratch.neighborhood`, of the point

@@ -79,6 +79,13 @@ struct Least_squares_first_thresholds
   /// part, about the quadric between them. For one noisy sheet the two are
   /// equal, within 1.5 at 100 neighbors; near an edge, the noise is less.
   static constexpr double bimodal = 1.5;
+  /// Where a quadric's normal is more than `near_turn` degrees from the
+  /// principal normal of the nearest `near_share` of the neighbors, which
+  /// lie on the point's side, the other side may have tilted the principal
+  /// axes: a ball about as deep as wide, whose residuals about the tilted
+  /// quadric are not bimodal.
+  static constexpr double near_share = 0.25;
+  static constexpr double near_turn = 10;
 };
 
 /// Jet fitting's quadric at a point: its normal, and its residuals' root
@@ -183,6 +190,30 @@ inline Quadric_fit fit_own_sheet(const std::vector<Eigen::Vector3d>& points, dou
   return fit_quadric(scratch.own, radius, scratch);
 }
 
+/// The quadric `fit` of the neighbors `points` (relative to the point,
+/// nearest first, within `radius`), or, where they hold the two sides of a
+/// thin part, that of the point's own side (`fit_own_sheet()`), so that its
+/// noise, which its neighbors' tests read, is not the gap between the sides.
+/// The sides are split along the quadric's normal where its residuals are
+/// bimodal (the quadric lies between them), else along the principal normal
+/// of the nearest neighbors where the quadric turned away from it.
+inline Quadric_fit fit_point_side(const std::vector<Eigen::Vector3d>& points, double radius, const Quadric_fit& fit,
+                                  Refit_scratch& scratch)
+{
+  typedef Least_squares_first_thresholds T;
+  Quadric_fit own{ Eigen::Vector3d::Zero(), 0, 0 };
+  if(fit.noise > T::bimodal * fit.rms)
+    own = fit_own_sheet(points, radius, fit.normal, scratch);
+  else if(points.size() >= T::least_for_sheets && fit.normal != Eigen::Vector3d::Zero())
+  {
+    const std::size_t nearest = std::size_t(T::near_share * double(points.size()));
+    const Eigen::Vector3d near = principal_normal(points, [&](std::size_t j) { return j < nearest; });
+    if(!within_angle(near, fit.normal, T::near_turn))
+      own = fit_own_sheet(points, radius, near, scratch);
+  }
+  return own.normal != Eigen::Vector3d::Zero() ? own : fit;
+}
+
 /// The neighborhoods of all the points, kept from the first pass for the
 /// next ones: the positions of each point's neighbors, nearest first.
 typedef std::vector<std::vector<std::uint32_t> > Neighbor_lists;
@@ -260,7 +291,8 @@ struct Least_squares_first_options
 /// `estimated(position)`, least squares first, in three passes over the
 /// cloud, and calls `write(position, normal, confidence, support)` for each:
 /// 1. at every point, the quadric of its neighborhood (`fit_quadric()`),
-///    whose neighbors are kept;
+///    or of its side of a thin part (`fit_point_side()`), whose neighbors
+///    are kept;
 /// 2. at every point, whether it is one sheet within the noise around it
 ///    (`noise_of_neighbors()` over the deviations relative to each
 ///    neighbor's radius, `is_one_sheet()`); where it is not but the
@@ -293,15 +325,9 @@ void least_squares_first(const Neighbor_search& search, const Settings& settings
       radii[i] = neighborhood.radius;
       if(options.supports)
         extents[i] = support_of(neighborhood);
-      Quadric_fit fit = fit_quadric(neighborhood.points, neighborhood.radius, scratch.refit);
-      if(fit.noise > Least_squares_first_thresholds::bimodal * fit.rms)
-      {
-        // Two sheets: the point's own is fitted alone, so that its noise,
-        // which its neighbors' tests read, is not the gap between them.
-        const Quadric_fit own = fit_own_sheet(neighborhood.points, neighborhood.radius, fit.normal, scratch.refit);
-        if(own.normal != Eigen::Vector3d::Zero())
-          fit = own;
-      }
+      const Quadric_fit fit = fit_point_side(
+        neighborhood.points, neighborhood.radius, fit_quadric(neighborhood.points, neighborhood.radius, scratch.refit),
+        scratch.refit);
       // The noise relative to the neighborhood's radius: where the density
       // varies, so does the scale of the neighborhoods a deviation is from.
       normals[i] = fit.normal, rms[i] = fit.rms, noise[i] = fit.noise / neighborhood.radius;
