@@ -256,7 +256,8 @@ int main(int argc, char** argv)
     one_of(names_of(settings)) + ": least squares where the neighborhood is one smooth sheet, the adaptive Hough "
     "transform elsewhere (default), or the paper's settings, the Hough transform everywhere (paper_precise: T_R from "
     "eq. 7 and 5 rotations; paper_fast: 300 planes and 2 rotations, unless --planes or --rotations say otherwise)";
-  const std::string sampling_help = "triple sampling: " + one_of(names_of(samplings));
+  const std::string sampling_help = "triple sampling: " + one_of(names_of(samplings)) +
+                                    " (with --adaptive, part of the default, only unif changes anything)";
   const std::string aggregation_help = one_of(names_of(aggregations));
   po::options_description described("Options");
   described.add_options()

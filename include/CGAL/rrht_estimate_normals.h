@@ -198,7 +198,9 @@ namespace CGAL {
        \cgalParamDefault{`CGAL::RRHT::Sampling::POINTS`}
        \cgalParamExtra{`CUBES` and `UNIF` draw points spatially uniformly in the neighborhood ball: the ball of
                        `neighbor_radius`, or, for a k-neighborhood or a capped ball, the ball through the farthest
-                       neighbor kept. They resist density variations (anisotropy) at some cost in time.}
+                       neighbor kept. They resist density variations (anisotropy) at some cost in time. With
+                       `adaptive` (the default), which draws spatially only along sharp features, `UNIF` makes it
+                       draw with `UNIF` there instead of `CUBES`, and the other values change nothing.}
      \cgalParamNEnd
 
      \cgalParamNBegin{presampling_factor}
@@ -247,10 +249,10 @@ namespace CGAL {
                        rotations, `CGAL::RRHT::Sampling::POINTS`). Where the confidence of that normal (see
                        `confidence_map`) is below 0.09, it is estimated again with `number_of_planes` and
                        `number_of_rotations` (the precise setting by default), with `POINTS`; where the
-                       confidence is below 0.045, as along sharp features, also with `CUBES` (`UNIF` if `sampling` is
-                       `UNIF`), whose normal is kept unless that with `POINTS` has a higher confidence (spatial
-                       drawing resists the uneven densities of the two sides of a sharp feature, but draws mostly
-                       outliers where they fill the ball).
+                       confidence is below 0.045, as along sharp features, with `CUBES` (`UNIF` if `sampling` is
+                       `UNIF`) instead, unless that normal's confidence is below the first one's and that with
+                       `POINTS` has a higher confidence (spatial drawing resists the uneven densities of the two sides
+                       of a sharp feature, but draws mostly outliers where they fill the ball).
                        Each normal is thus the normal that one of these plain settings gives at the point, and the
                        result stays the same for any number of threads. The confidence written is that of the
                        normal kept. `sampling` is otherwise ignored. The thresholds are tuned on the benchmark's

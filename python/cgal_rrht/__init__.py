@@ -181,6 +181,7 @@ def estimate_normals(
         How triples are drawn: uniformly among the neighbors [RRHT_Points],
         or spatially uniformly in the neighborhood ball [RRHT_Cubes,
         RRHT_Unif], which resists density variations at some cost in time.
+        With ``adaptive`` (the default), only "unif" changes anything.
     presampling : int, default 4
         The discretization of the ball for "cubes" (c^3 cubes) and "unif"
         (balls of radius r/c) [c], 1 to 32.
@@ -210,8 +211,9 @@ def estimate_normals(
         with the fast setting (at most 300 planes, 2 rotations), and where
         that normal's confidence is below 0.09 again with ``planes`` and
         ``rotations``; where it is below 0.045, as along sharp features,
-        also drawing spatially ("cubes", or "unif" if ``sampling`` is
-        "unif"), the normal of higher confidence being kept. On
+        drawing spatially ("cubes", or "unif" if ``sampling`` is "unif"),
+        unless the votes agree less so than the cheap ones and less than
+        among the points. On
         noisy CAD shapes: fewer wrong normals than the paper's precise setting
         in less than half its time. ``sampling`` is otherwise ignored.
     refit : bool, default False

@@ -8,6 +8,7 @@
 
 #include <CGAL/Named_function_parameters.h>
 
+#include <cstddef>
 #include <functional>
 #include <type_traits>
 
@@ -219,10 +220,15 @@ CGAL_RRHT_NAMED_PARAMETERS(CGAL_RRHT_FREE_FUNCTION)
 #undef CGAL_RRHT_FREE_FUNCTION
 #undef CGAL_RRHT_NAMED_PARAMETERS
 
-/// The type of `paper_precise()`.
+/// \cond SKIP_IN_MANUAL
 typedef RRHT::Named_function_parameters<bool, RRHT::internal_np::adaptive_t,
                                         RRHT::Named_function_parameters<bool, RRHT::internal_np::least_squares_first_t> >
   Paper_precise_parameters;
+typedef RRHT::Named_function_parameters<
+  unsigned int, RRHT::internal_np::number_of_rotations_t,
+  RRHT::Named_function_parameters<std::size_t, RRHT::internal_np::number_of_planes_t, Paper_precise_parameters> >
+  Paper_fast_parameters;
+/// \endcond
 
 /// The paper's precise setting (Section 6: T_R from eq. 7, 691 for 15 slices,
 /// and n_rot = 5, with `CGAL::RRHT::Sampling::POINTS` and
@@ -233,12 +239,6 @@ typedef RRHT::Named_function_parameters<bool, RRHT::internal_np::adaptive_t,
 /// for RRHT_Cubes; a parameter appended later wins.
 /// \return a chain that holds `least_squares_first(false)` and `adaptive(false)`
 inline Paper_precise_parameters paper_precise() { return least_squares_first(false).adaptive(false); }
-
-/// The type of `paper_fast()`.
-typedef RRHT::Named_function_parameters<
-  unsigned int, RRHT::internal_np::number_of_rotations_t,
-  RRHT::Named_function_parameters<std::size_t, RRHT::internal_np::number_of_planes_t, Paper_precise_parameters> >
-  Paper_fast_parameters;
 
 /// The paper's fast setting (Section 6: T_R = 300 and n_rot = 2), otherwise
 /// as `paper_precise()`.

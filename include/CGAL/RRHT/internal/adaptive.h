@@ -29,9 +29,9 @@ namespace internal {
 ///   cheap votes; where the confidence is below `spatial_below` too, which
 ///   happens along sharp features, by `spatial`'s instead, the parameters
 ///   given with RRHT_Cubes (RRHT_Unif if that was the sampling asked for),
-///   unless `precise`'s confidence is higher: spatial sampling resists the
-///   uneven density of the two sides of a feature, but draws mostly
-///   outliers where they fill the ball.
+///   unless its confidence is below the cheap one's and `precise`'s is
+///   higher: spatial sampling resists the uneven density of the two sides
+///   of a feature, but draws mostly outliers where they fill the ball.
 /// So a normal of the adaptive setting is, bit for bit, the normal that one
 /// of these plain settings gives at that point.
 struct Adaptive_stages

@@ -95,13 +95,16 @@ inline Estimated_normal recheck(std::uint64_t id, const Estimated_normal& cheap,
 {
   if(cheap.confidence >= Adaptive_stages::recheck_below)
     return cheap;
-  const Estimated_normal precise = estimate_normal_of_neighborhood(id, stages.precise, scratch);
   if(cheap.confidence >= Adaptive_stages::spatial_below)
-    return precise;
-  // Spatial drawing resists the uneven densities of the two sides of a sharp
-  // feature, but where outliers or heavy noise fill the ball it draws them
-  // most: the one whose votes agree more wins.
+    return estimate_normal_of_neighborhood(id, stages.precise, scratch);
+  // Spatial drawing sharpens the votes along a sharp feature, whose two
+  // sides have uneven densities. Where its votes agree less than the cheap
+  // ones, it drew the outliers or the heavy noise that fill the ball, and
+  // the precise normal drawn among the points wins if its votes agree more.
   const Estimated_normal spatial = estimate_normal_of_neighborhood(id, stages.spatial, scratch);
+  if(spatial.confidence >= cheap.confidence)
+    return spatial;
+  const Estimated_normal precise = estimate_normal_of_neighborhood(id, stages.precise, scratch);
   return precise.confidence > spatial.confidence ? precise : spatial;
 }
 
