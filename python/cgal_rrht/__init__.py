@@ -212,10 +212,10 @@ def estimate_normals(
         that normal's confidence is below 0.09 again with ``planes`` and
         ``rotations``; where it is below 0.045, as along sharp features,
         drawing spatially ("cubes", or "unif" if ``sampling`` is "unif"),
-        unless the votes agree less so than the cheap ones and less than
-        among the points. On
-        noisy CAD shapes: fewer wrong normals than the paper's precise setting
-        in less than half its time. ``sampling`` is otherwise ignored.
+        unless those votes agree less than the cheap ones and less than
+        those drawn among the points. On noisy CAD shapes: fewer wrong
+        normals than the paper's precise setting in less than half its time.
+        ``sampling`` is otherwise ignored.
     refit : bool, default False
         Refit each normal by least squares (beyond the paper): a quadric
         height field over its plane, fitted to the neighbors within 2.5
@@ -333,8 +333,7 @@ def estimate_normals(
     """
     array = _points(points, "points", "N")
     extra = None if neighbors is None else _points(neighbors, "neighbors", "M")
-    paper = _name(setting, SETTINGS, "setting") != "default"
-    fast = setting == "paper_fast"
+    fast = _name(setting, SETTINGS, "setting") == "paper_fast"
     arguments = dict(
         k=_integer(k, "k"),
         radius=None if radius is None else float(radius),
@@ -347,8 +346,8 @@ def estimate_normals(
         aggregation=_name(aggregation, AGGREGATIONS, "aggregation"),
         cluster_angle=float(cluster_angle),
         seed=_integer(seed, "seed"),
-        least_squares_first=not paper if least_squares_first is None else bool(least_squares_first),
-        adaptive=not paper if adaptive is None else bool(adaptive),
+        least_squares_first=_from_setting(least_squares_first, setting),
+        adaptive=_from_setting(adaptive, setting),
         refit=bool(refit),
         threads=None if threads is None else _integer(threads, "threads"),
         return_confidence=bool(return_confidence),
@@ -605,6 +604,11 @@ def _integer(value: object, name: str) -> int:
     if not -(2**63) <= value < 2**63:
         raise ValueError(f"{name} is out of range: {value}")
     return int(value)
+
+
+def _from_setting(flag: Optional[bool], setting: object) -> bool:
+    """``least_squares_first`` or ``adaptive``: as given, or, if None, on in the default setting only."""
+    return setting == "default" if flag is None else bool(flag)
 
 
 def _name(value: object, valid: tuple, name: str) -> str:

@@ -45,7 +45,7 @@ from typing import Any, Dict, List, Optional, Sequence, Tuple
 import numpy as np
 import numpy.typing as npt
 
-from . import AGGREGATIONS, SAMPLINGS, SETTINGS, _estimation_orientation, estimate_normals
+from . import AGGREGATIONS, SAMPLINGS, SETTINGS, _estimation_orientation, _from_setting, estimate_normals
 from .point_files import PointFile, PointFileError, ply_header, write_points
 
 __all__ = ["run", "split", "list_tiles", "TileError", "PointFileError", "Tile"]
@@ -422,9 +422,7 @@ def _first_halo(tiles: Sequence[Tile], options: Dict[str, Any]) -> float:
                      for t in tiles if np.all(np.isfinite(t.lower))]
         k = options.get("k", 100)
         reach = math.sqrt((k + 1) / (math.pi * float(np.median(densities)))) if densities else 1.0
-    least_squares_first = options.get("least_squares_first")
-    if least_squares_first is None:
-        least_squares_first = options.get("setting", "default") == "default"
+    least_squares_first = _from_setting(options.get("least_squares_first"), options.get("setting", "default"))
     return (5 if least_squares_first or options.get("refit") else 3) * reach
 
 
