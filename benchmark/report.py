@@ -125,6 +125,7 @@ TITLES = {
     "fillets": "Fillets: every RRHT setting against jet fitting on rounded edges (100k points, 2 threads)",
     "confidence": "Confidence per point (confidence_map): does it predict the error? (100k points, 0.2% noise)",
     "orientation": "Orienting the normals: rrht_orient_normals against mst_orient_normals (and Open3D)",
+    "default": "The default against its targets: every setting and jet fitting (100k points, k = 100, 2 threads)",
 }
 
 COLORS = {"Points": "tab:blue", "Cubes": "tab:orange", "Unif": "tab:green", "jet_K80": "black",
@@ -196,19 +197,19 @@ def plot_time_vs_points(rows, out, name, through, title):
     return [save(fig, os.path.join(out, name + ".png"))]
 
 
-def read_ratios(folder):
-    path = os.path.join(folder, "targets_ratios.csv")
+def read_ratios(folder, file="targets_ratios.csv"):
+    path = os.path.join(folder, file)
     if not os.path.exists(path):
         return []
     with open(path, newline="") as f:
         return list(csv.DictReader(f))
 
 
-def targets_table(out, befores=()):
-    """The ratios rrht_benchmark printed for the targets, from
-    targets_ratios.csv, after those of the earlier results `befores` if
+def targets_table(out, befores=(), file="targets_ratios.csv", column="ratio"):
+    """The values rrht_benchmark printed for the targets, from `file` (whose
+    values are in `column`), after those of the earlier results `befores` if
     given (columns named after the folders)."""
-    rows = read_ratios(out)
+    rows = read_ratios(out, file)
     if not rows:
         return ""
     # The row of time against k names its slowest k, which differs from run
@@ -217,7 +218,7 @@ def targets_table(out, befores=()):
         return re.sub(r" \(k = \d+\)", "", target)
 
     if befores:
-        olds = [{key(r["target"]): r for r in read_ratios(b)} for b in befores]
+        olds = [{key(r["target"]): r for r in read_ratios(b, file)} for b in befores]
         names = [os.path.basename(os.path.normpath(d)) for d in list(befores) + [out]]
         lines = ["| target | bound | " + " | ".join("%s | met" % n for n in names) + " |",
                  "|---|---|" + "---|---|" * len(names)]
@@ -225,12 +226,14 @@ def targets_table(out, befores=()):
             cells = []
             for old in olds:
                 b = old.get(key(r["target"]))
-                cells += ["%.3f" % float(b["ratio"]) if b else "", b["met"] if b else ""]
-            cells += ["%.3f" % float(r["ratio"]), r["met"]]
+                cells += ["%.3f" % float(b[column]) if b else "", b["met"] if b else ""]
+            cells += ["%.3f" % float(r[column]), r["met"]]
             lines.append("| %s | %s | %s |" % (r["target"], r["bound"], " | ".join(cells)))
     else:
-        lines = ["| target | ratio | bound | met |", "|---|---|---|---|"]
-        lines += ["| %s | %.3f | %s | %s |" % (r["target"], float(r["ratio"]), r["bound"], r["met"]) for r in rows]
+        lines = ["| target | %s | bound | met |" % column, "|---|---|---|---|"]
+        lines += ["| %s | %.3f | %s | %s |" % (r["target"], float(r[column]), r["bound"], r["met"]) for r in rows]
+    met = sum(r["met"] == "yes" for r in rows)
+    lines.append("\n%d of %d targets met." % (met, len(rows)))
     return "\n".join(lines) + "\n"
 
 
@@ -752,6 +755,8 @@ def main():
             extra = confidence_table(out)
         elif name == "orientation":
             images, extra = orientation_report(rows, out)
+        elif name == "default":
+            extra = targets_table(out, args.before, "default_targets.csv", "value")
         if name == "fig13_anisotropy":
             images += [i for i in rendered if i.startswith("fig11")]
         for image in images:

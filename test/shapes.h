@@ -623,6 +623,7 @@ inline double angle_error(const Sample& s)
 struct Errors
 {
   double rms = 0;          // RMS angle error, degrees
+  double mean = 0;         // mean angle error, degrees
   double rms_tau = 0;      // RMS_tau (paper, Section 6): errors above tau count as 90 degrees
   double share_above = 0;  // share of points with an error above tau
   double max = 0;          // largest error
@@ -640,6 +641,7 @@ Errors errors(const Cloud& cloud, Keep keep, double tau = 10)
       continue;
     const double a = angle_error(s);
     e.rms += a * a;
+    e.mean += a;
     e.rms_tau += (a < tau) ? a * a : 90. * 90.;
     e.share_above += (a > tau);
     e.max = (std::max)(e.max, a);
@@ -648,6 +650,7 @@ Errors errors(const Cloud& cloud, Keep keep, double tau = 10)
   if(n > 0)
   {
     e.rms = std::sqrt(e.rms / n);
+    e.mean /= n;
     e.rms_tau = std::sqrt(e.rms_tau / n);
     e.share_above /= n;
   }
