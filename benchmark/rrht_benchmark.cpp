@@ -480,8 +480,8 @@ public:
     rows_.push_back(Row{ what, value, bound, false, valid && std::isfinite(value) && std::isfinite(bound) });
   }
 
-  /// The number of targets with a value that are not met.
-  std::size_t print_and_write() const
+  /// Prints the targets, how many are met, and writes them to the file.
+  void print_and_write() const
   {
     std::ofstream csv(out_);
     csv << "target," << value_ << ",bound,met\n";
@@ -499,7 +499,6 @@ public:
     }
     std::printf("%zu of %zu targets met\n", rows_.size() - missed, rows_.size());
     std::fflush(stdout);
-    return missed;
   }
 
 private:
@@ -579,7 +578,7 @@ void targets(const Config& config)
   t.print_and_write();
 }
 
-// -- Issue 18's clouds: the noisy cube, cylinder, fandisk and anisotropic
+// -- The sharp shapes: the noisy cube, cylinder, fandisk and anisotropic
 // corner (100k points, 0.2% noise), each with its points near a sharp edge
 // (within 1% of the diagonal, found on the clean cloud).
 struct Shape_with_edges
@@ -588,23 +587,117 @@ struct Shape_with_edges
   std::vector<bool> near_edges;
 };
 
+/// `clean` with `noise_percent` noise, and its points within 1% of the
+/// diagonal of a sharp edge, found on the clean cloud.
+Shape_with_edges with_edges(const std::string& name, Cloud clean, double noise_percent, unsigned int seed)
+{
+  std::vector<bool> near = near_sharp_edges(clean, 0.01 * bounding_box_diagonal(clean));
+  return Shape_with_edges{ with_noise(name, std::move(clean), noise_percent, seed), std::move(near) };
+}
+
 std::vector<Shape_with_edges> shapes_with_edges(const Config& config)
 {
   const std::size_t n = 100000;
   std::vector<Shape_with_edges> shapes;
-  auto add = [&](const std::string& name, Cloud clean, unsigned int seed) {
-    const std::vector<bool> near = near_sharp_edges(clean, 0.01 * bounding_box_diagonal(clean));
-    shapes.push_back(Shape_with_edges{ with_noise(name, std::move(clean), 0.2, seed), near });
-  };
-  add("cube", cube(n, 1), 1);
-  add("cylinder", closed_cylinder(n, 2), 2);
+  shapes.push_back(with_edges("cube", cube(n, 1), 0.2, 1));
+  shapes.push_back(with_edges("cylinder", closed_cylinder(n, 2), 0.2, 2));
   Cloud fandisk;
   if(sample_mesh(config.shared("meshes/fandisk.off"), n, 3, fandisk))
-    add("fandisk", std::move(fandisk), 3);
+    shapes.push_back(with_edges("fandisk", std::move(fandisk), 0.2, 3));
   else
     warn_missing(config.shared("meshes/fandisk.off"));
-  add("corner", anisotropic_corner(n, 12), 12);
+  shapes.push_back(with_edges("corner", anisotropic_corner(n, 12), 0.2, 12));
   return shapes;
+}
+
+/// The point set ../shared/data/points/`name`.xyz with its given normals
+/// (kitten.xyz holds them, the others have a .normals file beside), with a
+/// message if it is absent.
+bool shared_points(const Config& config, const std::string& name, Dataset& d)
+{
+  const std::string path = config.shared("points/" + name + ".xyz");
+  const std::string normals = name == "kitten" ? "" : config.shared("points/" + name + ".normals");
+  if(points_with_normals(path, normals, name, 1, d))
+    return true;
+  warn_missing(path);
+  return false;
+}
+
+/// What a cloud that shaped the default is.
+enum class Cloud_kind
+{
+  SHARP,  // sharp edges only
+  MIXED,  // sharp edges and fillets
+  SMOOTH, // smooth or filleted
+  THIN,   // the two sides of a thin part in one neighborhood
+  OTHER   // the cube with 1% noise
+};
+
+/// Calls `visit(dataset, kind, near_edges)` on each cloud that shaped least
+/// squares first and the default (100k points unless said; `near_edges`:
+/// the points within 1% of a sharp edge, for the sharp and mixed shapes):
+/// the sharp shapes (0.2% noise), the cube with 1% noise, the fillet shapes,
+/// the sphere and the bunny, clean and with 0.2% noise, the thin parts
+/// (0.5% and 2% of the diagonal thick, 0.2% noise), and the parts 2% thick
+/// and the filleted plate at 20k points, where both sides lie well inside
+/// every neighborhood.
+template <typename Visit>
+void for_each_design_cloud(const Config& config, Visit visit)
+{
+  const std::vector<bool> none;
+  const std::size_t n = 100000;
+  for(const Shape_with_edges& shape : shapes_with_edges(config))
+    visit(shape.dataset, Cloud_kind::SHARP, shape.near_edges);
+  visit(synthetic("cube", cube, n, 1, 1), Cloud_kind::OTHER, none);
+  const double radius = std::sqrt(double(rrht_k.k) * 24 / (CGAL_PI * double(n)));
+  for(double noise : { 0., 0.2 })
+  {
+    for(double times : { 0.25, 0.5, 1., 2. })
+    {
+      char name[64];
+      std::snprintf(name, sizeof name, "rounded_box_r%gx", times);
+      visit(with_noise(name, rounded_box(n, times * radius, 61), noise, 61), Cloud_kind::SMOOTH, none);
+    }
+    visit(with_noise("filleted_plate", filleted_plate(n, 0.05, 0.1, 62), noise, 62), Cloud_kind::SMOOTH, none);
+    const Shape_with_edges slab = with_edges("rounded_slab", rounded_slab(n, 0.2, 63), noise, 63);
+    visit(slab.dataset, Cloud_kind::MIXED, slab.near_edges);
+    visit(synthetic("sphere", sphere, n, noise, 5), Cloud_kind::SMOOTH, none);
+    Dataset bunny;
+    if(shared_mesh(config, "bunny00.off", "bunny00", n, noise, 3, bunny))
+      visit(bunny, Cloud_kind::SMOOTH, none);
+  }
+  for(double percent : { 0.5, 2. })
+  {
+    char t[32];
+    std::snprintf(t, sizeof t, "_t%g%%", percent);
+    visit(with_noise(std::string("thin_box") + t, thin_box(n, percent / 100 * std::sqrt(8.), 1), 0.2, 1),
+          Cloud_kind::THIN, none);
+    visit(with_noise(std::string("bent_sheet") + t, bent_sheet(n, percent / 100 * std::sqrt(6.), 2), 0.2, 2),
+          Cloud_kind::THIN, none);
+  }
+  const std::size_t sparse = 20000;
+  visit(with_noise("thin_box_t2%", thin_box(sparse, 0.02 * std::sqrt(8.), 1), 0.2, 1), Cloud_kind::THIN, none);
+  visit(with_noise("bent_sheet_t2%", bent_sheet(sparse, 0.02 * std::sqrt(6.), 2), 0.2, 2), Cloud_kind::THIN, none);
+  visit(with_noise("filleted_plate", filleted_plate(sparse, 0.05, 0.1, 62), 0.2, 62), Cloud_kind::SMOOTH, none);
+}
+
+/// Calls `visit(dataset, k)` on the smooth clouds at CGAL's usual small k
+/// (12 and 18): the sphere and the bunny (100k points), clean and with 0.2%
+/// noise.
+template <typename Visit>
+void for_each_small_k_cloud(const Config& config, Visit visit)
+{
+  const std::size_t n = 100000;
+  for(double noise : { 0., 0.2 })
+  {
+    std::vector<Dataset> smooth = { synthetic("sphere", sphere, n, noise, 5) };
+    Dataset bunny;
+    if(shared_mesh(config, "bunny00.off", "bunny00", n, noise, 3, bunny))
+      smooth.push_back(bunny);
+    for(const Dataset& d : smooth)
+      for(unsigned int k : { 12u, 18u })
+        visit(d, k);
+  }
 }
 
 /// The errors (-1 without truth) and confidences of the `size` samples of a
@@ -748,14 +841,8 @@ void refit(const Config& config)
   if(shared_mesh(config, "bunny00.off", "bunny00", n, 0.2, 3, d))
     compare(d, rrht_k);
   for(const std::string name : { "kitten", "bunny100k", "fandisk100k", "cube100k" })
-  {
-    const bool given = name != "kitten"; // kitten.xyz holds its normals
-    const std::string path = config.shared("points/" + name + ".xyz");
-    if(points_with_normals(path, given ? config.shared("points/" + name + ".normals") : "", name, 1, d))
+    if(shared_points(config, name, d))
       compare(d, rrht_k);
-    else
-      warn_missing(path);
-  }
   for(const Shape_with_edges& shape : shapes_with_edges(config))
     compare(shape.dataset, rrht_k);
   for(double percent : { 0.5, 1., 2. })
@@ -809,67 +896,21 @@ void fillets(const Config& config)
 // -- Least squares first (beyond the paper): jet fitting's quadric where
 // the neighborhood is one smooth sheet within the noise, the adaptive
 // setting elsewhere, against the defaults, the adaptive setting alone and
-// jet fitting (K = 80)
-// on 100k points, 2 threads: the sharp shapes with 0.2% noise, the cube with
-// 1% noise, the fillet shapes, the sphere and the bunny, clean and with 0.2%
-// noise, and the thin parts (0.5% and 2% of the diagonal thick, 0.2% noise;
-// the parts 2% thick and the filleted plate at 20k points too);
-// then the sphere and the bunny at CGAL's usual small k (12 and 18), where
-// it runs against jet fitting and the defaults at the same k.
+// jet fitting (K = 80) on the clouds that shaped it (`for_each_design_cloud()`),
+// 2 threads; then on the smooth clouds at CGAL's usual small k (12 and 18),
+// against jet fitting and the defaults at the same k.
 void least_squares_first(const Config& config)
 {
   Experiment x(config, "least_squares_first");
-  const std::size_t n = 100000;
-  auto compare = [&](const Dataset& d) {
+  for_each_design_cloud(config, [&](const Dataset& d, Cloud_kind, const std::vector<bool>&) {
     for(const Estimator& e : { rrht_least_squares_first(rrht_k), rrht_defaults(rrht_k), rrht_adaptive(rrht_k), jet(paper_k) })
       x.run(d, e);
-  };
-  for(const Shape_with_edges& shape : shapes_with_edges(config))
-    compare(shape.dataset);
-  compare(synthetic("cube", cube, n, 1, 1));
-  const double radius = std::sqrt(double(rrht_k.k) * 24 / (CGAL_PI * double(n)));
-  for(double noise : { 0., 0.2 })
-  {
-    for(double times : { 0.25, 0.5, 1., 2. })
-    {
-      char name[64];
-      std::snprintf(name, sizeof name, "rounded_box_r%gx", times);
-      compare(with_noise(name, rounded_box(n, times * radius, 61), noise, 61));
-    }
-    compare(with_noise("filleted_plate", filleted_plate(n, 0.05, 0.1, 62), noise, 62));
-    compare(with_noise("rounded_slab", rounded_slab(n, 0.2, 63), noise, 63));
-    compare(synthetic("sphere", sphere, n, noise, 5));
-    Dataset bunny;
-    if(shared_mesh(config, "bunny00.off", "bunny00", n, noise, 3, bunny))
-      compare(bunny);
-  }
-  for(double percent : { 0.5, 2. })
-  {
-    char t[32];
-    std::snprintf(t, sizeof t, "_t%g%%", percent);
-    compare(with_noise(std::string("thin_box") + t, thin_box(n, percent / 100 * std::sqrt(8.), 1), 0.2, 1));
-    compare(with_noise(std::string("bent_sheet") + t, bent_sheet(n, percent / 100 * std::sqrt(6.), 2), 0.2, 2));
-  }
-  // The parts 2% thick and the filleted plate at 20k points: both sides lie
-  // well inside every neighborhood.
-  const std::size_t sparse = 20000;
-  compare(with_noise("thin_box_t2%_20k", thin_box(sparse, 0.02 * std::sqrt(8.), 1), 0.2, 1));
-  compare(with_noise("bent_sheet_t2%_20k", bent_sheet(sparse, 0.02 * std::sqrt(6.), 2), 0.2, 2));
-  compare(with_noise("filleted_plate_20k", filleted_plate(sparse, 0.05, 0.1, 62), 0.2, 62));
-  for(double noise : { 0., 0.2 })
-  {
-    std::vector<Dataset> smooth = { synthetic("sphere", sphere, n, noise, 5) };
-    Dataset bunny;
-    if(shared_mesh(config, "bunny00.off", "bunny00", n, noise, 3, bunny))
-      smooth.push_back(bunny);
-    for(const Dataset& d : smooth)
-      for(unsigned int k : { 12u, 18u })
-      {
-        const Neighborhood small{ k, 0 };
-        for(const Estimator& e : { rrht_least_squares_first(small), rrht_defaults(small), jet(small) })
-          x.run(d, e);
-      }
-  }
+  });
+  for_each_small_k_cloud(config, [&](const Dataset& d, unsigned int k) {
+    const Neighborhood small{ k, 0 };
+    for(const Estimator& e : { rrht_least_squares_first(small), rrht_defaults(small), jet(small) })
+      x.run(d, e);
+  });
 }
 
 // -- Time against the number of points at the fast setting, against jet
@@ -1423,7 +1464,6 @@ void default_targets(const Config& config)
 {
   Experiment x(config, "default");
   Targets t(config, "default_targets.csv", "value");
-  const std::size_t n = 100000;
   const Estimator ours = rrht_default(rrht_k), jet80 = jet(paper_k), jet100 = jet(rrht_k);
   // The settings the default replaces; the first is the paper's precise one.
   const std::vector<Estimator> others = { rrht_defaults(rrht_k), rrht(Rrht_setting::fast(), rrht_k),
@@ -1432,10 +1472,15 @@ void default_targets(const Config& config)
   auto ok = [](std::initializer_list<const Measurement*> ms) {
     return std::all_of(ms.begin(), ms.end(), [](const Measurement* m) { return m->status == Measurement::OK; });
   };
-  enum Kind { SHARP, SMOOTH, THIN, OTHER };
-  auto compare = [&](const Dataset& d, Kind kind, double time_bound = 1) {
+  // "cube 100k 0.2%: ", the start of each target's name.
+  auto label = [](const Dataset& d, const std::string& more = "") {
     char name[96];
     std::snprintf(name, sizeof name, "%s %zuk %g%%", d.name.c_str(), d.inliers / 1000, d.noise_percent);
+    return std::string(name) + more + ": ";
+  };
+
+  auto compare = [&](const Dataset& d, Cloud_kind kind, const std::vector<bool>& near_edges) {
+    const std::string prefix = label(d);
     const std::vector<Measurement> timed = x.run_in_rounds({ { &d, ours, 2 }, { &d, jet80, 2 } });
     const Measurement &m = timed[0], &j = timed[1];
     std::vector<Measurement> setting;
@@ -1445,109 +1490,55 @@ void default_targets(const Config& config)
     bool all_ok = ok({ &m });
     for(const Measurement& s : setting)
       best = (std::min)(best, share(s)), all_ok = all_ok && ok({ &s });
-    const std::string prefix = std::string(name) + ": ";
     t.add_value(prefix + "share > 10 deg <= best other setting's + 0.3", share(m), best + 0.3, all_ok);
     t.add_value(prefix + "share > 10 deg <= paper precise's", share(m), share(setting[0]), ok({ &m, &setting[0] }));
-    if(kind == SMOOTH)
+    if(kind == Cloud_kind::SMOOTH)
     {
       const Measurement j100 = x.run_with(d, jet100, 2);
       t.add_value(prefix + "share > 10 deg <= jet_K80's + 0.5", share(m), share(j) + 0.5, ok({ &m, &j }));
       t.add_value(prefix + "RMS <= jet_K100's", m.errors.rms, j100.errors.rms, ok({ &m, &j100 }));
     }
-    else if(kind == SHARP)
+    else if(kind == Cloud_kind::SHARP)
       t.add_value(prefix + "share > 10 deg <= 0.5 jet_K80's", share(m), 0.5 * share(j), ok({ &m, &j }));
-    else if(kind == THIN)
+    else if(kind == Cloud_kind::THIN)
       t.add_value(prefix + "share > 10 deg <= jet_K80's", share(m), share(j), ok({ &m, &j }));
-    t.add(prefix + "time / jet_K80's", m, j, time_bound);
-  };
-
-  for(const Shape_with_edges& shape : shapes_with_edges(config))
-    compare(shape.dataset, SHARP, shape.dataset.name == "cube" ? 0.6 : 1);
-  compare(synthetic("cube", cube, n, 1, 1), OTHER);
-  const double radius = std::sqrt(double(rrht_k.k) * 24 / (CGAL_PI * double(n)));
-  for(double noise : { 0., 0.2 })
-  {
-    for(double times : { 0.25, 0.5, 1., 2. })
+    t.add(prefix + "time / jet_K80's", m, j, kind == Cloud_kind::SHARP && d.name == "cube" ? 0.6 : 1);
+    if(kind == Cloud_kind::MIXED)
     {
-      char name[64];
-      std::snprintf(name, sizeof name, "rounded_box_r%gx", times);
-      compare(with_noise(name, rounded_box(n, times * radius, 61), noise, 61), SMOOTH);
+      // The part with both: near its sharp edges, the target of the sharp clouds.
+      Dataset near = d;
+      for(std::size_t i = 0; i < near.cloud.size(); ++i)
+        if(!near_edges[i])
+          near.cloud[i].truth = CGAL::NULL_VECTOR;
+      near.name += "_near_edges";
+      const Measurement mn = x.run_with(near, ours, 2), jn = x.run_with(near, jet80, 2);
+      t.add_value(label(near) + "share > 10 deg <= 0.5 jet_K80's", share(mn), 0.5 * share(jn), ok({ &mn, &jn }));
     }
-    compare(with_noise("filleted_plate", filleted_plate(n, 0.05, 0.1, 62), noise, 62), SMOOTH);
-    // The part with both: every target, and near its sharp edges that of the
-    // sharp clouds.
-    Cloud clean = rounded_slab(n, 0.2, 63);
-    const std::vector<bool> near = near_sharp_edges(clean, 0.01 * bounding_box_diagonal(clean));
-    Dataset slab = with_noise("rounded_slab", std::move(clean), noise, 63);
-    compare(slab, OTHER);
-    for(std::size_t i = 0; i < slab.cloud.size(); ++i)
-      if(!near[i])
-        slab.cloud[i].truth = CGAL::NULL_VECTOR;
-    slab.name += "_near_edges";
-    const Measurement m = x.run_with(slab, ours, 2), j = x.run_with(slab, jet80, 2);
-    char name[96];
-    std::snprintf(name, sizeof name, "%s %zuk %g%%: share > 10 deg <= 0.5 jet_K80's", slab.name.c_str(),
-                  slab.inliers / 1000, noise);
-    t.add_value(name, share(m), 0.5 * share(j), ok({ &m, &j }));
-    compare(synthetic("sphere", sphere, n, noise, 5), SMOOTH);
-    Dataset bunny;
-    if(shared_mesh(config, "bunny00.off", "bunny00", n, noise, 3, bunny))
-      compare(bunny, SMOOTH);
-  }
+  };
+  for_each_design_cloud(config, compare);
   // The clean point sets with given normals, on their consistent points.
   for(const std::string name : { "kitten", "bunny100k", "fandisk100k" })
   {
-    const bool given = name != "kitten"; // kitten.xyz holds its normals
-    const std::string path = config.shared("points/" + name + ".xyz");
     Dataset d;
-    if(!points_with_normals(path, given ? config.shared("points/" + name + ".normals") : "", name, 1, d))
-    {
-      warn_missing(path);
+    if(!shared_points(config, name, d))
       continue;
-    }
     keep_consistent_truths(d);
-    compare(d, SMOOTH);
+    compare(d, Cloud_kind::SMOOTH, {});
   }
-  for(double percent : { 0.5, 2. })
-  {
-    char thick[32];
-    std::snprintf(thick, sizeof thick, "_t%g%%", percent);
-    compare(with_noise(std::string("thin_box") + thick, thin_box(n, percent / 100 * std::sqrt(8.), 1), 0.2, 1), THIN);
-    compare(with_noise(std::string("bent_sheet") + thick, bent_sheet(n, percent / 100 * std::sqrt(6.), 2), 0.2, 2),
-            THIN);
-  }
-  // At 20k points, both sides of the parts 2% thick lie well inside every
-  // neighborhood.
-  const std::size_t sparse = 20000;
-  compare(with_noise("thin_box_t2%", thin_box(sparse, 0.02 * std::sqrt(8.), 1), 0.2, 1), THIN);
-  compare(with_noise("bent_sheet_t2%", bent_sheet(sparse, 0.02 * std::sqrt(6.), 2), 0.2, 2), THIN);
-  compare(with_noise("filleted_plate", filleted_plate(sparse, 0.05, 0.1, 62), 0.2, 62), SMOOTH);
-
-  // Smooth clouds at CGAL's usual small k, against jet fitting at the same k.
-  for(double noise : { 0., 0.2 })
-  {
-    std::vector<Dataset> smooth = { synthetic("sphere", sphere, n, noise, 5) };
-    Dataset bunny;
-    if(shared_mesh(config, "bunny00.off", "bunny00", n, noise, 3, bunny))
-      smooth.push_back(bunny);
-    for(const Dataset& d : smooth)
-      for(unsigned int k : { 12u, 18u })
-      {
-        const Neighborhood small{ k, 0 };
-        Estimator e = rrht_default(small);
-        e.name += small.suffix();
-        const Measurement m = x.run_with(d, e, 2), j = x.run_with(d, jet(small), 2);
-        char name[96];
-        std::snprintf(name, sizeof name, "%s %zuk %g%% k = %u: ", d.name.c_str(), d.inliers / 1000, noise, k);
-        t.add_value(std::string(name) + "mean error <= jet's + 0.5 deg", m.errors.mean, j.errors.mean + 0.5, ok({ &m, &j }));
-        t.add_value(std::string(name) + "RMS <= jet's + 0.5 deg", m.errors.rms, j.errors.rms + 0.5, ok({ &m, &j }));
-      }
-  }
+  for_each_small_k_cloud(config, [&](const Dataset& d, unsigned int k) {
+    const Neighborhood small{ k, 0 };
+    Estimator e = rrht_default(small);
+    e.name += small.suffix();
+    const Measurement m = x.run_with(d, e, 2), j = x.run_with(d, jet(small), 2);
+    const std::string prefix = label(d, " k = " + std::to_string(k));
+    t.add_value(prefix + "mean error <= jet's + 0.5 deg", m.errors.mean, j.errors.mean + 0.5, ok({ &m, &j }));
+    t.add_value(prefix + "RMS <= jet's + 0.5 deg", m.errors.rms, j.errors.rms + 0.5, ok({ &m, &j }));
+  });
 
   // The 1M-point sphere with 0.2% noise, in rounds.
   const Dataset big = synthetic("sphere", sphere, 1000000, 0.2, 31);
   const std::vector<Measurement> m = x.run_in_rounds({ { &big, ours, 2 }, { &big, jet80, 2 } });
-  t.add("sphere 1000k 0.2%: time / jet_K80's", m[0], m[1], 0.6);
+  t.add(label(big) + "time / jet_K80's", m[0], m[1], 0.6);
   t.print_and_write();
 }
 

@@ -500,6 +500,7 @@ TEST_CASE("Least squares first: next to a sharp edge the Hough transform's norma
 {
   using CGAL::RRHT::internal::fit_quadric;
   using CGAL::RRHT::internal::prefers_hough;
+  using CGAL::RRHT::internal::referee_normal;
   CGAL::RRHT::internal::Refit_scratch scratch;
   const Eigen::Vector3d up(0, 0, 1);
   auto degrees = [](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
@@ -513,7 +514,7 @@ TEST_CASE("Least squares first: next to a sharp edge the Hough transform's norma
     const Eigen::Vector3d quadric = fit_quadric(points, points.back().norm(), scratch).normal;
     INFO("the quadric is " << degrees(quadric, up) << " degrees from the face's normal");
     REQUIRE(degrees(quadric, up) > 5);
-    CHECK(prefers_hough(up, quadric, points, scratch));
+    CHECK(prefers_hough(up, quadric, referee_normal(points, scratch)));
   }
   {
     // The face z = 0 up to x = 0, a fillet of radius 0.05 down to the face x = 0.05; the point is in the middle of
@@ -532,7 +533,7 @@ TEST_CASE("Least squares first: next to a sharp edge the Hough transform's norma
     const Eigen::Vector3d quadric = fit_quadric(points, points.back().norm(), scratch).normal;
     INFO("the quadric is " << degrees(quadric, exact) << " degrees from the exact normal");
     REQUIRE(degrees(quadric, exact) < 5);
-    CHECK(!prefers_hough(up, quadric, points, scratch));
+    CHECK(!prefers_hough(up, quadric, referee_normal(points, scratch)));
   }
 }
 

@@ -64,6 +64,10 @@ struct Least_squares_first_thresholds
   /// `referee_min` points: with fewer, with noise, the referee and the
   /// Hough transform are both too scattered to overrule the quadric.
   static constexpr double cos_turn = 0.99619469809174553;
+  /// Where the referee is within 2.45 degrees (this cosine) of the quadric,
+  /// just under half of those 5, no normal more than 5 degrees from the
+  /// quadric can be nearer to the referee: the quadric stays.
+  static constexpr double cos_contest = 0.99908590626404760;
   static constexpr double referee = 0.3;
   static constexpr std::size_t referee_min = 24;
   /// A neighborhood holds a second sheet (the other side of a thin part)
@@ -121,8 +125,7 @@ inline Quadric_fit fit_quadric(const std::vector<Eigen::Vector3d>& points, doubl
   to_frame(points, radius, axis, u, v, scratch.local);
   const std::vector<Eigen::Vector3d>& local = scratch.local;
   Eigen::Matrix<double, 6, 1> quadric;
-  if(!fit_height_field<6>(local, [&](std::size_t i) { return quadric_monomials(local[i]); },
-                          [](std::size_t) { return true; }, quadric))
+  if(!fit_quadric_height_field(local, [](std::size_t) { return true; }, quadric))
     return none;
   std::vector<double>& residuals = scratch.residuals;
   residuals.resize(size);
@@ -258,23 +261,44 @@ inline bool keeps_quadric(std::size_t position, const std::vector<std::uint32_t>
   return double(rejected) <= Least_squares_first_thresholds::most_rejected * double(near);
 }
 
-/// Whether the Hough transform's normal `hough` is taken instead of the
-/// kept quadric's normal `quadric` at a point next to rejected ones, whose
-/// neighborhood `points` are relative to it, nearest first. Next to a sharp
-/// feature, the quadric of a neighborhood that grazes it turns towards the
-/// other side while the Hough transform and the quadric of the nearer
-/// neighbors stay on the point's side; on a fillet narrower than the
-/// neighborhood, the Hough transform takes a flat side while the nearer
-/// quadric follows the fillet.
-inline bool prefers_hough(const Eigen::Vector3d& hough, const Eigen::Vector3d& quadric,
-                          const std::vector<Eigen::Vector3d>& points, Refit_scratch& scratch)
+/// The referee between the Hough transform and a kept quadric at a point
+/// next to rejected ones: the normal of the quadric of the nearest
+/// `Least_squares_first_thresholds::referee` share of its neighborhood
+/// `points` (relative to it, nearest first), or the null vector where that
+/// share holds too few points to overrule the quadric.
+inline Eigen::Vector3d referee_normal(const std::vector<Eigen::Vector3d>& points, Refit_scratch& scratch)
 {
   typedef Least_squares_first_thresholds T;
   const std::size_t count = std::size_t(T::referee * double(points.size()));
-  if(count < T::referee_min || std::abs(hough.dot(quadric)) >= T::cos_turn)
-    return false;
+  if(count < T::referee_min)
+    return Eigen::Vector3d::Zero();
   scratch.nearest.assign(points.begin(), points.begin() + std::ptrdiff_t(count));
-  const Eigen::Vector3d referee = fit_quadric(scratch.nearest, scratch.nearest.back().norm(), scratch).normal;
+  return fit_quadric(scratch.nearest, scratch.nearest.back().norm(), scratch).normal;
+}
+
+/// Whether the referee (`referee_normal()`) may prefer the Hough transform's
+/// normal to the kept quadric's `quadric`: only where it is turned from the
+/// quadric by more than half the turn that `prefers_hough()` asks of the
+/// Hough transform (the triangle inequality, with a margin for rounding),
+/// so that the Hough transform runs only where it may change the answer.
+inline bool contests_quadric(const Eigen::Vector3d& referee, const Eigen::Vector3d& quadric)
+{
+  return referee != Eigen::Vector3d::Zero() &&
+         std::abs(referee.dot(quadric)) < Least_squares_first_thresholds::cos_contest;
+}
+
+/// Whether the Hough transform's normal `hough` is taken instead of the
+/// kept quadric's normal `quadric` at a point next to rejected ones, as the
+/// `referee` (`referee_normal()`) decides. Next to a sharp feature, the
+/// quadric of a neighborhood that grazes it turns towards the other side
+/// while the Hough transform and the quadric of the nearer neighbors stay
+/// on the point's side; on a fillet narrower than the neighborhood, the
+/// Hough transform takes a flat side while the nearer quadric follows the
+/// fillet.
+inline bool prefers_hough(const Eigen::Vector3d& hough, const Eigen::Vector3d& quadric, const Eigen::Vector3d& referee)
+{
+  if(referee == Eigen::Vector3d::Zero() || std::abs(hough.dot(quadric)) >= Least_squares_first_thresholds::cos_turn)
+    return false;
   return std::abs(referee.dot(hough)) > std::abs(referee.dot(quadric));
 }
 
@@ -299,8 +323,9 @@ struct Least_squares_first_options
 ///    neighborhood holds two sheets (`own_sheet()`), the quadric of the
 ///    point's own sheet replaces it if that one is;
 /// 3. where the quadric is kept (`keeps_quadric()`), its normal, unless a
-///    neighbor was rejected and the Hough transform's first stage is
-///    preferred (`prefers_hough()`); elsewhere, the Hough transform's, with
+///    neighbor was rejected, the referee contests the quadric
+///    (`contests_quadric()`) and prefers the Hough transform's first stage
+///    (`prefers_hough()`); elsewhere, the Hough transform's, with
 ///    `settings` or the adaptive `stages`, then refitted if asked.
 /// The confidence of a quadric's normal is measured on the votes of the
 /// Hough transform's first stage at the point (`confidence()`). The support
@@ -386,12 +411,19 @@ void least_squares_first(const Neighbor_search& search, const Settings& settings
         continue;
       }
       search.rebuild(i, neighbors[i], radii[i], neighborhood);
+      const Eigen::Vector3d referee = border ? referee_normal(neighborhood.points, scratch.refit) : Eigen::Vector3d::Zero();
+      const bool contested = border && contests_quadric(referee, normals[i]);
+      if(quadric && !contested && !options.confidences)
+      {
+        write(i, normals[i], 0., support);
+        continue;
+      }
       const std::uint64_t id = search.id(i);
       Estimated_normal e;
       if(quadric)
       {
         const Estimated_normal cheap = estimate_normal_of_neighborhood(id, first_stage, scratch);
-        if(!border || !prefers_hough(cheap.normal, normals[i], neighborhood.points, scratch.refit))
+        if(!contested || !prefers_hough(cheap.normal, normals[i], referee))
         {
           write(i, normals[i], confidence(scratch.candidates, normals[i], first_stage.cos_cluster_angle), support);
           continue;

@@ -148,18 +148,49 @@ bool fit_height_field(const std::vector<Eigen::Vector3d>& local, Monomials monom
   return c.allFinite();
 }
 
-/// The monomials of a quadric height field at a point of the frame.
-inline Eigen::Matrix<double, 6, 1> quadric_monomials(const Eigen::Vector3d& p)
-{
-  Eigen::Matrix<double, 6, 1> m;
-  m << 1, p.x(), p.y(), p.x() * p.x(), p.x() * p.y(), p.y() * p.y();
-  return m;
-}
-
-/// The value of the quadric height field `c` at a point of the frame.
+/// The value of the quadric height field `c`, of the monomials
+/// 1, x, y, x^2, xy, y^2, at a point of the frame.
 inline double quadric_height(const Eigen::Matrix<double, 6, 1>& c, const Eigen::Vector3d& p)
 {
-  return c.dot(quadric_monomials(p));
+  const double x = p.x(), y = p.y();
+  return c[0] + x * (c[1] + c[3] * x + c[4] * y) + y * (c[2] + c[5] * y);
+}
+
+/// Fits `c`, the least-squares quadric height field (`quadric_height()`)
+/// of the points `local` where `use(i)`; false where fewer than 6 points
+/// are used or the system is singular. Its normal equations hold 15
+/// distinct moments x^a y^b (a + b <= 4), each summed once as a scalar
+/// rather than as the 36 products of a monomial vector
+/// (`fit_height_field()`): the quadric is fitted at every point of the cloud.
+template <class Use>
+bool fit_quadric_height_field(const std::vector<Eigen::Vector3d>& local, Use use, Eigen::Matrix<double, 6, 1>& c)
+{
+  double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0, sxxx = 0, sxxy = 0, sxyy = 0, syyy = 0;
+  double sxxxx = 0, sxxxy = 0, sxxyy = 0, sxyyy = 0, syyyy = 0;
+  double sz = 0, sxz = 0, syz = 0, sxxz = 0, sxyz = 0, syyz = 0;
+  for(std::size_t i = 0; i < local.size(); ++i)
+    if(use(i))
+    {
+      const double x = local[i].x(), y = local[i].y(), z = local[i].z();
+      const double xx = x * x, xy = x * y, yy = y * y;
+      n += 1, sx += x, sy += y, sxx += xx, sxy += xy, syy += yy;
+      sxxx += xx * x, sxxy += xx * y, sxyy += x * yy, syyy += yy * y;
+      sxxxx += xx * xx, sxxxy += xx * xy, sxxyy += xx * yy, sxyyy += xy * yy, syyyy += yy * yy;
+      sz += z, sxz += x * z, syz += y * z, sxxz += xx * z, sxyz += xy * z, syyz += yy * z;
+    }
+  if(n < 6)
+    return false;
+  Eigen::Matrix<double, 6, 6> normal_matrix;
+  normal_matrix << n, sx, sy, sxx, sxy, syy, //
+    sx, sxx, sxy, sxxx, sxxy, sxyy,          //
+    sy, sxy, syy, sxxy, sxyy, syyy,          //
+    sxx, sxxx, sxxy, sxxxx, sxxxy, sxxyy,    //
+    sxy, sxxy, sxyy, sxxxy, sxxyy, sxyyy,    //
+    syy, sxyy, syyy, sxxyy, sxyyy, syyyy;
+  Eigen::Matrix<double, 6, 1> right_side;
+  right_side << sz, sxz, syz, sxxz, sxyz, syyz;
+  c = normal_matrix.ldlt().solve(right_side);
+  return c.allFinite();
 }
 
 /// The principal axes of `points` where `use(i)`: the eigenvectors of their
@@ -231,7 +262,7 @@ inline One_sheet fit_one_sheet(const std::vector<Eigen::Vector3d>& points, doubl
     fit.inliers = 0;
     for(std::size_t i = 0; i < local.size(); ++i)
       fit.inliers += inlier(i);
-    if(!fit_height_field<6>(local, [&](std::size_t i) { return quadric_monomials(local[i]); }, inlier, fit.quadric))
+    if(!fit_quadric_height_field(local, inlier, fit.quadric))
     {
       fit.inliers = 0;
       return fit;
@@ -356,8 +387,7 @@ inline Eigen::Vector3d refit_normal(const std::vector<Eigen::Vector3d>& points, 
     to_frame(points, radius, axis, u, v, scratch.local);
     const std::vector<Eigen::Vector3d>& local = scratch.local;
     Eigen::Matrix<double, 6, 1> quadric;
-    return fit_height_field<6>(local, [&](std::size_t i) { return quadric_monomials(local[i]); },
-                               [](std::size_t) { return true; }, quadric)
+    return fit_quadric_height_field(local, [](std::size_t) { return true; }, quadric)
              ? turned((axis - quadric[1] * u - quadric[2] * v).normalized())
              : none;
   }
