@@ -150,6 +150,27 @@ inline Estimator rrht_default(const Neighborhood& n)
   return e;
 }
 
+/// Least squares first with one of the paper's settings where the quadric is
+/// rejected, instead of the adaptive one: the precise setting
+/// ("RRHT_least_squares_first_precise") or, if `fast`, the fast one (300
+/// planes, 2 rotations: "RRHT_least_squares_first_fast").
+inline Estimator rrht_least_squares_first_with(const Neighborhood& n, bool fast)
+{
+  Estimator e;
+  e.name = fast ? "RRHT_least_squares_first_fast" : "RRHT_least_squares_first_precise";
+  e.planes = fast ? 300 : 0;
+  e.rotations = fast ? 2 : 5;
+  e.estimate = [n, fast](Cloud& cloud, unsigned int) {
+    auto np = sample_maps().neighbor_radius(n.radius).adaptive(false).least_squares_first(true);
+    if(fast)
+      CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(cloud, n.k,
+                                                                    np.number_of_planes(std::size_t(300)).number_of_rotations(2u));
+    else
+      CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(cloud, n.k, np);
+  };
+  return e;
+}
+
 /// The paper's precise setting, named with its neighborhood: "RRHT_defaults_K18".
 inline Estimator rrht_defaults(const Neighborhood& n)
 {

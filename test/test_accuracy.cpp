@@ -537,6 +537,45 @@ TEST_CASE("Least squares first: next to a sharp edge the Hough transform's norma
   }
 }
 
+TEST_CASE("Least squares first: where the referee does not contest the quadric, the Hough transform's normal is never "
+          "taken",
+          "[accuracy][least-squares-first]")
+{
+  // The Hough transform is skipped where !contests_quadric(): that must never change the answer. Triples near the
+  // thresholds: the referee up to 3 degrees from the quadric, the Hough transform's normal 4 to 8 degrees from it.
+  using CGAL::RRHT::internal::contests_quadric;
+  using CGAL::RRHT::internal::prefers_hough;
+  std::mt19937_64 generator(31);
+  std::normal_distribution<double> gaussian;
+  std::uniform_real_distribution<double> uniform(0, 1);
+  auto random_unit = [&] { return Eigen::Vector3d(gaussian(generator), gaussian(generator), gaussian(generator)).normalized(); };
+  // `from` turned by `degrees` about a random axis orthogonal to it, flipped at random (the normals are unoriented).
+  auto turned = [&](const Eigen::Vector3d& from, double degrees) {
+    const Eigen::Vector3d axis = from.cross(random_unit()).normalized();
+    const Eigen::Vector3d to = Eigen::AngleAxisd(degrees * CGAL_PI / 180, axis) * from;
+    return uniform(generator) < 0.5 ? Eigen::Vector3d(-to) : to;
+  };
+  std::size_t uncontested = 0, contested_and_taken = 0;
+  for(int i = 0; i < 200000; ++i)
+  {
+    const Eigen::Vector3d quadric = random_unit();
+    const Eigen::Vector3d referee = turned(quadric, 3 * uniform(generator));
+    const Eigen::Vector3d hough = turned(quadric, 4 + 4 * uniform(generator));
+    if(!contests_quadric(referee, quadric))
+    {
+      ++uncontested;
+      if(prefers_hough(hough, quadric, referee))
+        FAIL("taken while uncontested: the referee " << std::acos((std::min)(1., std::abs(referee.dot(quadric)))) * 180 / CGAL_PI
+                                                     << " degrees from the quadric");
+    }
+    else if(prefers_hough(hough, quadric, referee))
+      ++contested_and_taken;
+  }
+  // Both sides of the test are reached: the check above is not vacuous.
+  CHECK(uncontested > 100000);
+  CHECK(contested_and_taken > 100);
+}
+
 TEST_CASE("Least squares first: a thin box whose sides are within the noise, better than jet fitting and the defaults",
           "[accuracy][least-squares-first]")
 {
