@@ -536,8 +536,8 @@ void targets(const Config& config)
                                                        { &s, jet80, 2 },
                                                        { &s, fast, 2 },
                                                        { &s, queries, 2 } });
-  // Time against k: the defaults on the cube with 2 threads, k from 6 to 200
-  // (issue 16), in rounds of their own.
+  // Time against k: the defaults on the cube with 2 threads, k from 6 to 200,
+  // in rounds of their own.
   const std::vector<unsigned int> ks = { 6, 8, 10, 12, 14, 16, 17, 18, 20, 22, 25, 30, 40, 50, 60, 70, 80, 100, 120, 150, 200 };
   std::vector<Experiment::Planned> against_k;
   for(unsigned int k : ks)
@@ -732,12 +732,12 @@ bool read_per_point(const std::string& path, std::size_t size, std::vector<doubl
   return errors.size() == size;
 }
 
-// -- The confidence per point (issue 18, beyond the paper): how well
-// 1 - confidence predicts the errors above 10 degrees (area under the ROC
-// curve) and how it drops near sharp edges, with the defaults on issue 18's
-// clouds (2 threads), and what writing it costs (in rounds against the same
-// call without it). Per-point errors and confidences go to the scratch
-// folder for the renderings; the figures to confidence_auc.csv.
+// -- The confidence per point (beyond the paper): how well 1 - confidence
+// predicts the errors above 10 degrees (area under the ROC curve) and how it
+// drops near sharp edges, with the defaults on the sharp shapes
+// (`shapes_with_edges()`, 2 threads), and what writing it costs (in rounds
+// against the same call without it). Per-point errors and confidences go to
+// the scratch folder for the renderings; the figures to confidence_auc.csv.
 void confidence(const Config& config)
 {
   Experiment x(config, "confidence");
@@ -783,9 +783,9 @@ void confidence(const Config& config)
   }
 }
 
-// -- The adaptive setting (issue 18, beyond the paper): its errors against
+// -- The adaptive setting (beyond the paper): its errors against
 // the precise setting (RRHT_Points, T_R = 691, n_rot = 5) and RRHT_Cubes on
-// issue 18's clouds (2 threads), over all points and near a sharp edge, and
+// the sharp shapes (2 threads), over all points and near a sharp edge, and
 // on the cube its time against jet fitting, the fast and the precise
 // settings, in rounds. Writes adaptive_errors.csv and adaptive_time.csv.
 void adaptive(const Config& config)
@@ -834,13 +834,13 @@ void adaptive(const Config& config)
   }
 }
 
-// -- The least-squares refit (issue 18, sections 3 and 4, beyond the
-// paper): the defaults without and with `refit(true)` against jet fitting
-// (K = 80) on 100k points, 2 threads: smooth clouds (the sphere with and
-// without noise, the bunny, the point sets with given normals), issue 18's
-// sharp clouds, where nothing may be lost, and thin parts (a thin box and a
-// bent sheet, 0.5% to 2% of the diagonal thick, 0.2% noise), where all three
-// also run with K = 30, and jet fitting with RRHT's K as well.
+// -- The least-squares refit (beyond the paper): the defaults without and
+// with `refit(true)` against jet fitting (K = 80) on 100k points, 2 threads:
+// smooth clouds (the sphere with and without noise, the bunny, the point
+// sets with given normals), the sharp shapes, where nothing may be lost,
+// and thin parts (a thin box and a bent sheet, 0.5% to 2% of the diagonal
+// thick, 0.2% noise), where all three also run with K = 30, and jet fitting
+// with RRHT's K as well.
 void refit(const Config& config)
 {
   Experiment x(config, "refit");

@@ -205,7 +205,7 @@ inline Cloud anisotropic_corner(std::size_t n, unsigned int seed)
   });
 }
 
-/// A thin box (issue 18): the plate [-1,1]^2 x [-t/2, t/2], all six faces,
+/// A thin box: the plate [-1,1]^2 x [-t/2, t/2], all six faces,
 /// uniformly over its area.
 inline Cloud thin_box(std::size_t n, double t, unsigned int seed)
 {
@@ -219,7 +219,7 @@ inline Cloud thin_box(std::size_t n, double t, unsigned int seed)
   });
 }
 
-/// A bent sheet of thickness t (issue 18): a quarter of a cylinder of axis z,
+/// A bent sheet of thickness t: a quarter of a cylinder of axis z,
 /// length 2, both sides (radii 1 - t/2 and 1 + t/2) equally sampled.
 inline Cloud bent_sheet(std::size_t n, double t, unsigned int seed)
 {

@@ -13,13 +13,43 @@ import cgal_rrht
 __all__ = ["estimate_normals", "orient_normals"]
 
 
-def estimate_normals(pcd: Any, **kwargs: Any) -> Any:
+def _neighborhood(search_param: Any) -> dict:
+    """The ``k`` and ``radius`` of :func:`cgal_rrht.estimate_normals` that
+    take the points that Open3D's ``search_param`` finds: Open3D counts the
+    point itself among its ``knn`` or ``max_nn``, RRHT's ``k`` does not."""
+    import open3d as o3d
+
+    def neighbors(count: int) -> int:
+        if count < 3:
+            raise ValueError(f"search_param finds at most {count} points: a plane needs 3")
+        return count - 1
+
+    if isinstance(search_param, o3d.geometry.KDTreeSearchParamKNN):
+        return {"k": neighbors(search_param.knn)}
+    if isinstance(search_param, o3d.geometry.KDTreeSearchParamRadius):
+        return {"k": 0, "radius": search_param.radius}  # the whole ball
+    if isinstance(search_param, o3d.geometry.KDTreeSearchParamHybrid):
+        return {"k": neighbors(search_param.max_nn), "radius": search_param.radius}  # the nearest in the ball
+    raise TypeError("search_param must be an open3d.geometry.KDTreeSearchParamKNN, KDTreeSearchParamRadius or "
+                    f"KDTreeSearchParamHybrid, not {type(search_param).__name__}")
+
+
+def estimate_normals(pcd: Any, search_param: Any = None, **kwargs: Any) -> Any:
     """Fills ``pcd.normals`` of an ``open3d.geometry.PointCloud`` with RRHT normals.
 
-    Like ``pcd.estimate_normals()``, but keeps sharp features. The keyword
-    arguments are those of :func:`cgal_rrht.estimate_normals` (``k``,
-    ``radius``, ``sampling``, ``seed``...). The normals are unit and not
-    oriented, unless ``orient`` or ``viewpoint`` is given:
+    Like ``pcd.estimate_normals()``, but keeps sharp features. The
+    neighborhoods are given as to Open3D, by ``search_param``: an
+    ``open3d.geometry.KDTreeSearchParamKNN(knn)`` (the ``knn`` nearest
+    points, the point itself included), ``KDTreeSearchParamRadius(radius)``
+    (every point within ``radius``) or
+    ``KDTreeSearchParamHybrid(radius, max_nn)`` (at most the ``max_nn``
+    nearest within ``radius``), the same points as Open3D takes; or as to
+    :func:`cgal_rrht.estimate_normals`, by ``k`` and ``radius``. Without
+    either, the point and its 100 nearest neighbors (Open3D's default is
+    30 points: RRHT votes better with more). The other keyword arguments are those of
+    :func:`cgal_rrht.estimate_normals` (``sampling``, ``seed``...). The
+    normals are unit and not oriented, unless ``orient`` or ``viewpoint``
+    is given:
 
     - ``orient="consistent"`` replaces a call to
       ``pcd.orient_normals_consistent_tangent_plane(k)`` after the
@@ -41,7 +71,12 @@ def estimate_normals(pcd: Any, **kwargs: Any) -> Any:
     Raises
     ------
     TypeError
-        If ``pcd`` is not an ``open3d.geometry.PointCloud``.
+        If ``pcd`` is not an ``open3d.geometry.PointCloud``, if
+        ``search_param`` is not one of Open3D's three search parameters, or
+        if it is given with ``k`` or ``radius``.
+    ValueError
+        If ``search_param`` finds fewer than 3 points, or as
+        :func:`cgal_rrht.estimate_normals`.
 
     Examples
     --------
@@ -50,13 +85,19 @@ def estimate_normals(pcd: Any, **kwargs: Any) -> Any:
         import open3d as o3d, cgal_rrht.open3d
 
         pcd = o3d.io.read_point_cloud("examples/data/fandisk_20k.ply")
-        cgal_rrht.open3d.estimate_normals(pcd, k=50, orient="consistent")
+        cgal_rrht.open3d.estimate_normals(pcd, search_param=o3d.geometry.KDTreeSearchParamKNN(50),
+                                          orient="consistent")
         mesh, _ = o3d.geometry.TriangleMesh.create_from_point_cloud_poisson(pcd, depth=8)
     """
     import open3d as o3d
 
     if not isinstance(pcd, o3d.geometry.PointCloud):
         raise TypeError(f"pcd must be an open3d.geometry.PointCloud, not {type(pcd).__name__}")
+    if search_param is not None:
+        given = [name for name in ("k", "radius") if name in kwargs]
+        if given:
+            raise TypeError(f"give the neighborhood either by search_param or by {' and '.join(given)}, not both")
+        kwargs.update(_neighborhood(search_param))
     # Open3D's points are a contiguous float64 (N, 3) buffer, read in place.
     result = cgal_rrht.estimate_normals(np.asarray(pcd.points), **kwargs)
     normals, confidence = result if kwargs.get("return_confidence") else (result, None)

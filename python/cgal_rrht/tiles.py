@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """Normals of clouds larger than memory: tiles with halos, on Dask.
 
-The cloud is a set of tiles: the files of a folder (binary PLY or ``.npy``),
+The cloud is a set of tiles: the files of a folder (PLY or ``.npy``),
 or one large file cut into square tiles of the xy plane (``split()``, or the
 command ``python -m cgal_rrht.tiles split``). One Dask task per tile loads the
 tile and a halo, the points of the other tiles within a margin of its xy
@@ -97,19 +97,15 @@ class Tile:
 
 def scan_tile(path: str) -> Tuple[int, Tuple[float, float], Tuple[float, float], Optional[str]]:
     """Checks a tile and returns its number of points, its xy bounding box and its ids file, or a TileError."""
+    if Path(path).suffix.lower() not in _TILE_FORMATS:
+        raise TileError(f"bad tile {path}: tiles are PLY or .npy files")
     try:
         points = PointFile(path)
+        lower, upper, count = _xy_bounds(points)
     except PointFileError as error:
         raise TileError(f"bad tile {error}") from None
-    if Path(path).suffix.lower() not in _TILE_FORMATS:
-        raise TileError(f"bad tile {path}: tiles are binary PLY or .npy files")
-    if len(points) == 0:
+    if count == 0:
         raise TileError(f"bad tile {path}: it holds no point")
-    lower, upper = np.full(2, np.inf), np.full(2, -np.inf)
-    for _, chunk in points.chunks(_CHUNK_ROWS):
-        finite = chunk[np.isfinite(chunk).all(axis=1), :2]
-        if len(finite):
-            lower, upper = np.minimum(lower, finite.min(axis=0)), np.maximum(upper, finite.max(axis=0))
     ids_path = _ids_path(Path(path))
     if ids_path is not None:
         try:
@@ -118,7 +114,20 @@ def scan_tile(path: str) -> Tuple[int, Tuple[float, float], Tuple[float, float],
             raise TileError(f"bad tile {path}: its ids file {ids_path} cannot be read: {error}") from None
         if ids.shape != (len(points),) or ids.dtype.kind not in "ui" or (ids.dtype.kind == "i" and ids.min() < 0):
             raise TileError(f"bad tile {path}: its ids file {ids_path} is not {len(points)} non-negative integers")
-    return len(points), tuple(lower), tuple(upper), None if ids_path is None else str(ids_path)
+    return count, tuple(lower), tuple(upper), None if ids_path is None else str(ids_path)
+
+
+def _xy_bounds(points: PointFile) -> Tuple[np.ndarray, np.ndarray, int]:
+    """The xy bounding box of the points whose coordinates are all finite
+    ((inf, inf) and (-inf, -inf) if none is), and the number of points, in
+    one pass over the file by chunks."""
+    lower, upper, count = np.full(2, np.inf), np.full(2, -np.inf), 0
+    for _, chunk in points.chunks(_CHUNK_ROWS):
+        finite = chunk[np.isfinite(chunk).all(axis=1), :2]
+        count += len(chunk)
+        if len(finite):
+            lower, upper = np.minimum(lower, finite.min(axis=0)), np.maximum(upper, finite.max(axis=0))
+    return lower, upper, count
 
 
 def estimate_tile(index: int, tiles: Sequence[Tile], halo: float, output: str, options: Dict[str, Any]) -> Dict[str, int]:
@@ -251,7 +260,7 @@ def _load_box(tiles: Sequence[Tile], lower: np.ndarray, upper: np.ndarray, *, sk
 
 
 def list_tiles(folder: "os.PathLike[str] | str") -> List[Path]:
-    """The tile files of a folder (binary PLY and ``.npy``, not the ids files), by name."""
+    """The tile files of a folder (PLY and ``.npy``, not the ids files), by name."""
     folder = Path(folder)
     if not folder.is_dir():
         raise TileError(f"{folder}: no such folder")
@@ -272,9 +281,11 @@ def run(input: "os.PathLike[str] | str", output: "os.PathLike[str] | str", *, sc
     Parameters
     ----------
     input : path-like
-        A folder of tiles (binary PLY or ``.npy`` files), or one point file
-        (binary PLY, ``.npy``, ``.xyz``, ``.pwn``), cut first into tiles of
-        ``tile_size`` in a temporary folder next to ``output``.
+        A folder of tiles (PLY or ``.npy`` files: binary PLY and ``.npy``
+        are memory-mapped, ASCII PLY is parsed again wherever a halo needs
+        it), or one point file (PLY, ``.npy``, ``.xyz``, ``.pwn``, ``.off``),
+        cut first into tiles of ``tile_size`` in a temporary folder next to
+        ``output``.
     output : path-like
         For a folder of tiles, a folder that receives one file per tile, of
         the same name and format, with the points and their normals (``x y z
@@ -338,9 +349,9 @@ def run(input: "os.PathLike[str] | str", output: "os.PathLike[str] | str", *, sc
         other than one point, and what ``estimate_normals()`` refuses in
         ``orient`` and ``viewpoint``.
     """
-    for name in ("ids", "return_support", "progress"):
+    for name in ("ids", "neighbors", "neighbor_ids", "return_support", "progress"):
         if name in estimator:
-            raise TypeError(f"run() sets {name} itself")
+            raise TypeError(f"run() sets {name} itself: each task passes its tile's ids and halo")
     if isinstance(orient, str) and orient == "consistent":
         raise ValueError(_NO_CONSISTENT)
     if viewpoint is not None and np.shape(viewpoint) != (3,):
@@ -379,8 +390,11 @@ def _run_tiles(paths: List[Path], output: Path, scheduler: Optional[str], worker
     from distributed import progress as progress_bar
 
     if scheduler is None:
+        # Quiet: what stops the run is raised, and Dask logs errors at its shutdown that are none (its cancelled
+        # heartbeats). Its HTTP server runs even without a dashboard: on a free local port, not on 8787, which
+        # another cluster may hold (a warning).
         cluster = LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1, processes=True,
-                               dashboard_address=None, silence_logs=logging.ERROR)
+                               dashboard_address="127.0.0.1:0", silence_logs=logging.CRITICAL)
         client = Client(cluster)
     else:
         cluster, client = None, Client(scheduler)
@@ -444,12 +458,7 @@ def split(input: "os.PathLike[str] | str", folder: "os.PathLike[str] | str", *, 
     """
     source, folder = PointFile(input), Path(folder)
     if tile_size is None:
-        lower, upper, count = np.full(2, np.inf), np.full(2, -np.inf), 0
-        for _, chunk in source.chunks(_CHUNK_ROWS):
-            finite = chunk[np.isfinite(chunk[:, :2]).all(axis=1), :2]
-            count += len(chunk)
-            if len(finite):
-                lower, upper = np.minimum(lower, finite.min(axis=0)), np.maximum(upper, finite.max(axis=0))
+        lower, upper, count = _xy_bounds(source)
         area = float(np.prod(upper - lower)) if count and np.all(np.isfinite(lower)) else 0.0
         tile_size = math.sqrt(area * 1e6 / count) if area > 0 else 1.0
     if not (tile_size > 0 and math.isfinite(tile_size)):
@@ -529,10 +538,7 @@ def _merge(tiles: List[Path], normals: Path, output: Path, confidence: bool) -> 
 
 def _columns(path: Path, start: int, stop: int, count: int) -> np.ndarray:
     """Rows ``start`` to ``stop`` of the first ``count`` columns of a file written by ``write_points()``."""
-    if path.suffix.lower() == ".npy":
-        return np.asarray(np.load(path, mmap_mode="r")[start:stop, :count])
-    rows = PointFile(path)._rows[start:stop]  # structured: the names of write_points()
-    return np.stack([rows[name] for name in rows.dtype.names[:count]], axis=1)
+    return PointFile(path).table(start, stop)[:, :count]
 
 
 def _ids_path(tile: Path) -> Optional[Path]:
@@ -548,9 +554,9 @@ def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="python -m cgal_rrht.tiles",
         description="Normals of a cloud larger than memory, tile by tile with halos, on Dask: the same normals, "
-        "bit for bit, as the whole cloud in memory. INPUT: a folder of tiles (binary PLY or .npy, the ids "
+        "bit for bit, as the whole cloud in memory. INPUT: a folder of tiles (PLY or .npy, the ids "
         "being the rows of the tiles in name order, or NAME.ids.npy), or one point file "
-        "(.ply, .npy, .xyz, .pwn) cut into tiles first. OUTPUT: a folder of tiles with normals, or one .ply or "
+        "(.ply, .npy, .xyz, .pwn, .off) cut into tiles first. OUTPUT: a folder of tiles with normals, or one .ply or "
         ".npy file for one input file. 'python -m cgal_rrht.tiles split INPUT FOLDER --tile-size S' only "
         "cuts a file into tiles.",
     )

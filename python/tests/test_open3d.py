@@ -44,6 +44,32 @@ def test_replaces_existing_normals_and_orients_with_open3d(fandisk):
     assert np.array_equal(np.abs(oriented), np.abs(cgal_rrht.estimate_normals(points)))
 
 
+def test_search_param_as_in_open3d(fandisk):
+    """Open3D's search parameters give the normals of the same neighborhoods, fewer wrong ones than Open3D's."""
+    points, truth = fandisk
+    pcd = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(points))
+    spacing = np.mean(pcd.compute_nearest_neighbor_distance())
+    # Open3D counts the point itself among knn and max_nn.
+    cases = [(o3d.geometry.KDTreeSearchParamKNN(50), {"k": 49}),
+             (o3d.geometry.KDTreeSearchParamRadius(6 * spacing), {"k": 0, "radius": 6 * spacing}),
+             (o3d.geometry.KDTreeSearchParamHybrid(radius=6 * spacing, max_nn=30), {"k": 29, "radius": 6 * spacing})]
+    for search_param, neighborhood in cases:
+        cgal_rrht.open3d.estimate_normals(pcd, search_param=search_param)
+        normals = np.asarray(pcd.normals).copy()
+        assert np.array_equal(normals, cgal_rrht.estimate_normals(points, **neighborhood)), search_param
+        theirs = o3d.geometry.PointCloud(pcd.points)
+        theirs.estimate_normals(search_param)
+        rrht_wrong = np.mean(angle_errors_deg(normals, truth) > 10)
+        open3d_wrong = np.mean(angle_errors_deg(np.asarray(theirs.normals), truth) > 10)
+        assert rrht_wrong < 0.5 * open3d_wrong, (search_param, rrht_wrong, open3d_wrong)
+    with pytest.raises(TypeError, match="either by search_param or by k"):
+        cgal_rrht.open3d.estimate_normals(pcd, search_param=o3d.geometry.KDTreeSearchParamKNN(50), k=50)
+    with pytest.raises(TypeError, match="KDTreeSearchParamKNN"):
+        cgal_rrht.open3d.estimate_normals(pcd, search_param=50)
+    with pytest.raises(ValueError, match="a plane needs 3"):
+        cgal_rrht.open3d.estimate_normals(pcd, search_param=o3d.geometry.KDTreeSearchParamKNN(2))
+
+
 def test_empty_point_cloud_and_bad_arguments():
     pcd = o3d.geometry.PointCloud()
     cgal_rrht.open3d.estimate_normals(pcd)

@@ -9,6 +9,7 @@ import subprocess
 import sys
 import threading
 import time
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -65,8 +66,9 @@ def read_normals(folder, count):
     normals = np.full((count, 3), np.nan)
     for tile in tiles.list_tiles(folder.parent / "tiles"):
         ids = np.load(tile.with_name(tile.stem + ".ids.npy"))
-        out = PointFile(folder / tile.name)._rows
-        normals[ids] = np.column_stack([out["nx"], out["ny"], out["nz"]])
+        out = PointFile(folder / tile.name)
+        assert out.names == ("x", "y", "z", "nx", "ny", "nz")
+        normals[ids] = out.table()[:, 3:]
     return normals
 
 
@@ -107,9 +109,47 @@ def test_tiles_written_by_rrht_normals(cluster, tmp_path):
     (tmp_path / "tiles" / "fandisk.ply").write_bytes(data.read_bytes())
     tiles.run(tmp_path / "tiles", tmp_path / "out", scheduler=cluster.scheduler_address, progress=False, k=30)
     points = PointFile(tmp_path / "tiles" / "fandisk.ply").read()
-    out = PointFile(tmp_path / "out" / "fandisk.ply")._rows
-    assert np.array_equal(np.column_stack([out["x"], out["y"], out["z"]]), points)
-    assert np.array_equal(np.column_stack([out["nx"], out["ny"], out["nz"]]), cgal_rrht.estimate_normals(points, k=30))
+    out = PointFile(tmp_path / "out" / "fandisk.ply").table()
+    assert np.array_equal(out[:, :3], points)
+    assert np.array_equal(out[:, 3:], cgal_rrht.estimate_normals(points, k=30))
+
+
+def test_every_file_that_rrht_normals_reads(cluster, tmp_path):
+    """One input file in ASCII PLY, OFF or .xyz, and a folder with an ASCII PLY tile, give the normals of the
+    points in memory, bit for bit, without a warning."""
+    points = parts_side_by_side(20_000)
+    lines = [" ".join(repr(v) for v in p) + "\n" for p in points]  # repr: the doubles, exactly
+
+    def ascii_ply(rows, kind="double"):
+        return ("ply\nformat ascii 1.0\ncomment CGAL's data files are ASCII\n"
+                f"element vertex {len(rows)}\nproperty {kind} x\nproperty {kind} y\nproperty {kind} z\n"
+                "element face 0\nproperty list uchar int vertex_indices\nend_header\n" + "".join(rows))
+
+    # CGAL reads a PLY file's float properties as single-precision numbers, and so must the tiles.
+    singles = points.astype(np.float32)
+    inputs = {"cloud.ply": (ascii_ply(lines), points),
+              "cloud.off": ("OFF\n# a comment\n20000 0 0\n" + "".join(lines), points),
+              "cloud.xyz": ("".join(lines), points),
+              "floats.ply": (ascii_ply([" ".join(f"{v:.9g}" for v in p) + "\n" for p in singles], "float"),
+                             singles.astype(np.float64))}
+    expected = cgal_rrht.estimate_normals(points, **OPTIONS)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", UserWarning)
+        for name, (content, read) in inputs.items():
+            (tmp_path / name).write_text(content)
+            tiles.run(tmp_path / name, tmp_path / f"{name}.npy", scheduler=cluster.scheduler_address, progress=False,
+                      tile_size=4.0, **OPTIONS)
+            out = np.load(tmp_path / f"{name}.npy")
+            assert np.array_equal(out[:, :3], read), name
+            normals = expected if read is points else cgal_rrht.estimate_normals(read, **OPTIONS)
+            assert np.array_equal(out[:, 3:6], normals), name
+        (tmp_path / "tiles").mkdir()
+        (tmp_path / "tiles" / "a.ply").write_text(ascii_ply(lines[:10_000]))
+        np.save(tmp_path / "tiles" / "b.npy", points[10_000:])
+        tiles.run(tmp_path / "tiles", tmp_path / "out", scheduler=cluster.scheduler_address, progress=False, **OPTIONS)
+    out = np.concatenate([PointFile(tmp_path / "out" / "a.ply").table(), PointFile(tmp_path / "out" / "b.npy").table()])
+    assert np.array_equal(out[:, :3], points)
+    assert np.array_equal(out[:, 3:], expected)
 
 
 def test_tiles_oriented_up_as_the_whole_cloud(tiled, cluster):
@@ -230,9 +270,9 @@ def test_bad_tiles_are_named_and_nothing_is_written(cluster, tmp_path):
         ("empty", lambda f: np.save(f / "c.npy", np.empty((0, 3))), r"c\.npy: it holds no point"),
         ("truncated", lambda f: (f / "c.ply").write_bytes((good / "a.ply").read_bytes()[:-100]), r"c\.ply.*truncated"),
         ("not a ply", lambda f: (f / "c.ply").write_text("hello\n"), r"c\.ply: not a PLY file"),
-        ("ascii ply", lambda f: (f / "c.ply").write_text("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
-                                                          "property float y\nproperty float z\nend_header\n0 0 0\n"),
-         r"c\.ply: a ascii PLY file"),
+        ("truncated ascii ply", lambda f: (f / "c.ply").write_text(
+            "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty float z\n"
+            "end_header\n0 0 0\n"), r"c\.ply: truncated: 2 vertices announced, 1 stored"),
         ("missing", lambda f: (f / "c.ply").symlink_to(tmp_path / "nowhere.ply"), r"c\.ply: no such file"),
         ("wrong shape", lambda f: np.save(f / "c.npy", np.zeros((5, 2))), r"c\.npy: not an array of points"),
     ]:
@@ -275,6 +315,7 @@ def test_command_line(cli_env, tmp_path):
                                      "300", "--seed", "4"],
                           capture_output=True, text=True, env=cli_env)
     assert done.returncode == 0, done.stderr
+    assert done.stderr == "" and done.stdout == ""  # -q: a successful run says nothing
     expected = cgal_rrht.estimate_normals(points, k=30, setting="paper_precise", least_squares_first=True, planes=300,
                                           seed=4)
     assert np.array_equal(read_normals(tmp_path / "out", len(points)), expected)

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The CGAL RRHT authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Beyond the paper (issue 18): a least-squares refit of the RRHT normal on
+// Beyond the paper: a least-squares refit of the RRHT normal on
 // the neighbors that lie on its plane. The Hough accumulator quantizes
 // directions and its votes come from triples, noisier than a fit on all
 // points; where the neighborhood is one smooth sheet within the noise, a
@@ -29,9 +29,8 @@ namespace CGAL {
 namespace RRHT {
 namespace internal {
 
-/// The thresholds of the refit, chosen on the clouds of
-/// `benchmark/results/issue18` (its README: "The least-squares refit that
-/// landed" and "Fourth session").
+/// The thresholds of the refit, chosen on the benchmark's sharp shapes,
+/// smooth clouds and thin parts (the user manual, "Beyond the paper").
 struct Refit_thresholds
 {
   /// Inliers lie within `band` noise deviations of the fitted surface.
