@@ -156,15 +156,16 @@ inline Estimator rrht_default(const Neighborhood& n)
 /// planes, 2 rotations: "RRHT_least_squares_first_fast").
 inline Estimator rrht_least_squares_first_with(const Neighborhood& n, bool fast)
 {
+  const Rrht_setting setting = fast ? Rrht_setting::fast() : Rrht_setting::precise();
   Estimator e;
   e.name = fast ? "RRHT_least_squares_first_fast" : "RRHT_least_squares_first_precise";
-  e.planes = fast ? 300 : 0;
-  e.rotations = fast ? 2 : 5;
-  e.estimate = [n, fast](Cloud& cloud, unsigned int) {
+  e.planes = fast ? setting.planes : 0; // 0: the precise setting's T_R of eq. 7
+  e.rotations = setting.rotations;
+  e.estimate = [n, fast, setting](Cloud& cloud, unsigned int) {
     auto np = sample_maps().neighbor_radius(n.radius).adaptive(false).least_squares_first(true);
     if(fast)
-      CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(cloud, n.k,
-                                                                    np.number_of_planes(std::size_t(300)).number_of_rotations(2u));
+      CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(
+        cloud, n.k, np.number_of_planes(std::size_t(setting.planes)).number_of_rotations(unsigned(setting.rotations)));
     else
       CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(cloud, n.k, np);
   };

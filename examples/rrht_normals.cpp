@@ -18,6 +18,8 @@
 #include <CGAL/property_map.h>
 #include <CGAL/Real_timer.h>
 
+#include "ply_header_check.h"
+
 #include <boost/algorithm/string/predicate.hpp>
 #include <boost/program_options.hpp>
 
@@ -150,54 +152,6 @@ private:
   bool m_enabled, m_shown = false;
   clock::time_point m_start, m_last;
 };
-
-// What makes a PLY header one that CGAL's PLY reader (5.5 to 6.2) cannot
-// take, or an empty string. That reader adds each property line's property
-// to the last element read: a damaged header whose properties come before
-// any element makes it write through an empty list and crash. And it reads
-// the points of every `vertex` element, at the origin where an element has
-// no x, y and z: a damaged header with two, or without the coordinates,
-// would add points that the file does not hold. It reads the first line as
-// the signature and the second as the format, refusing them itself, and
-// keywords from the third line on, up to end_header.
-std::string damaged_ply_header(const fs::path& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  std::string line;
-  std::vector<std::string> elements, vertex_properties;
-  for(std::size_t number = 1; std::getline(in, line); ++number)
-  {
-    std::istringstream words(line);
-    std::string keyword, first, second;
-    words >> keyword >> first >> second;
-    if(number == 1 && keyword != "ply")
-      return {}; // not a PLY file: CGAL refuses it
-    if(number <= 2)
-      continue;
-    const std::string where = ", line " + std::to_string(number) + " of the PLY header";
-    if(keyword == "end_header")
-      break;
-    if(keyword == "element")
-    {
-      if(first == "vertex" && std::count(elements.begin(), elements.end(), "vertex") > 0)
-        return "a second vertex element" + where;
-      elements.push_back(first);
-    }
-    else if(keyword == "property")
-    {
-      if(elements.empty())
-        return "a property before any element" + where;
-      if(elements.back() == "vertex")
-        vertex_properties.push_back(second);
-    }
-  }
-  const auto has = [&](const char* name) {
-    return std::count(vertex_properties.begin(), vertex_properties.end(), name) > 0;
-  };
-  if(std::count(elements.begin(), elements.end(), "vertex") > 0 && !(has("x") && has("y") && has("z")))
-    return "the vertices have no x, y and z properties";
-  return {};
-}
 
 // Writes the points with their normals and confidences: a binary PLY with a
 // property `confidence` after the normal, as CGAL::IO::write_PLY() writes

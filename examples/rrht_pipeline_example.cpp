@@ -35,6 +35,8 @@
 #include <CGAL/property_map.h>
 #include <CGAL/Real_timer.h>
 
+#include "ply_header_check.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -165,11 +167,15 @@ int main(int argc, char** argv)
   CGAL::Real_timer timer;
 
   // 1. Read.
+  //    A PLY header is checked first: CGAL's reader crashes on some damaged ones.
   std::vector<Point_with_normal> points;
-  if(!CGAL::IO::read_points(input, std::back_inserter(points), CGAL::parameters::point_map(Point_map())) ||
+  const std::string damage = damaged_ply_header(input);
+  if(!damage.empty() ||
+     !CGAL::IO::read_points(input, std::back_inserter(points), CGAL::parameters::point_map(Point_map())) ||
      points.empty())
   {
-    std::cerr << "Error: cannot read points from " << input << std::endl;
+    std::cerr << "Error: cannot read points from " << input << (damage.empty() ? "" : " (" + damage + ")")
+              << std::endl;
     return EXIT_FAILURE;
   }
   std::cout << "1. read " << points.size() << " points from " << input << std::endl;

@@ -112,8 +112,8 @@ def scan_tile(path: str) -> Tuple[int, Tuple[float, float], Tuple[float, float],
             ids = np.load(ids_path, mmap_mode="r", allow_pickle=False)
         except (OSError, ValueError) as error:
             raise TileError(f"bad tile {path}: its ids file {ids_path} cannot be read: {error}") from None
-        if ids.shape != (len(points),) or ids.dtype.kind not in "ui" or (ids.dtype.kind == "i" and ids.min() < 0):
-            raise TileError(f"bad tile {path}: its ids file {ids_path} is not {len(points)} non-negative integers")
+        if ids.shape != (count,) or ids.dtype.kind not in "ui" or (ids.dtype.kind == "i" and ids.min() < 0):
+            raise TileError(f"bad tile {path}: its ids file {ids_path} is not {count} non-negative integers")
     return count, tuple(lower), tuple(upper), None if ids_path is None else str(ids_path)
 
 

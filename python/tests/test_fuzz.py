@@ -6,6 +6,7 @@ point files of cgal_rrht.tiles) ends each with a clear error or a correct result
 a crash, and a failed rrht_normals leaves the earlier output as it was."""
 
 import subprocess
+from pathlib import Path
 
 import numpy as np
 
@@ -77,7 +78,10 @@ def cases(tmp_path, count, seed):
 def test_rrht_normals_never_crashes_on_malformed_files(cli, tmp_path):
     output = tmp_path / "normals.xyz"
     earlier = b"1 2 3 0 0 1\n"
-    succeeded = failed = 0
+    # The pipeline example reads a user's file through the same check of PLY headers.
+    pipeline = Path(cli).with_name("rrht_pipeline_example")
+    assert pipeline.is_file(), f"{pipeline} is built with rrht_normals"
+    succeeded = failed = damaged_headers = 0
     for path in cases(tmp_path, 240, seed=5):
         output.write_bytes(earlier)
         done = subprocess.run([cli, str(path), str(output), "-k", "8", "--threads", "1", "-q"], capture_output=True)
@@ -86,6 +90,12 @@ def test_rrht_normals_never_crashes_on_malformed_files(cli, tmp_path):
             failed += 1
             assert b"rrht_normals: " in done.stderr, (path.name, done.stderr[-300:])  # after CGAL's own message
             assert output.read_bytes() == earlier, path.name
+            damage = done.stderr.partition(b"(malformed file: ")[2]
+            if damage:  # the header check's refusal: the pipeline example refuses the file too
+                damaged_headers += 1
+                piped = subprocess.run([str(pipeline), str(path), str(tmp_path / "mesh.off")], capture_output=True)
+                assert piped.returncode == 1 and damage.rstrip(b")\n") in piped.stderr, (path.name, piped.stderr)
+                assert not (tmp_path / "mesh.off").exists(), path.name
             continue
         succeeded += 1
         rows = np.loadtxt(output, ndmin=2)
@@ -95,7 +105,7 @@ def test_rrht_normals_never_crashes_on_malformed_files(cli, tmp_path):
         lengths = np.linalg.norm(normals, axis=1)
         assert np.all((np.abs(lengths - 1) < 1e-6) | (lengths == 0)), path.name
     # Both outcomes are reached: the damage is neither always fatal nor always harmless.
-    assert succeeded > 20 and failed > 20, (succeeded, failed)
+    assert succeeded > 20 and failed > 20 and damaged_headers > 5, (succeeded, failed, damaged_headers)
 
 
 def test_tiles_point_files_never_crash_on_malformed_files(tmp_path):
