@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Writes the noisy cube of the command-line measurements in
-benchmark/results/targets/README.md: N points uniform on the faces of
+"""Writes a noisy cube for measurements of the command-line tool
+rrht_normals: N points uniform on the faces of
 [-1, 1]^3 (seed 1), with Gaussian noise of 0.2% of the diagonal, as .xyz.
 
     /usr/bin/python3 benchmark/noisy_cube.py cube100k.xyz [N]

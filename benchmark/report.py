@@ -118,7 +118,7 @@ TITLES = {
     "real_meshes": "Real meshes (../shared/data/meshes), sampled, the face normal as truth",
     "real_points": "Point sets with given normals (../shared/data/points)",
     "real_scans": "Real scans without normals (../shared/data/scans): time and memory",
-    "targets": "Performance targets (issues 5 and 16): 100k-point cube and 1M-point sphere, 0.2% noise; time against k",
+    "speed": "Speed: the performance targets on the 100k-point cube and the 1M-point sphere, 0.2% noise; time against k",
     "scaling": "Time against the number of points at the fast setting (sphere, 0.2% noise)",
     "adaptive": "The adaptive setting against the precise setting and RRHT_Cubes (100k points, 0.2% noise, 2 threads)",
     "refit": "The least-squares refit (refit=True) on smooth, sharp and thin clouds (100k points, 2 threads)",
@@ -197,7 +197,7 @@ def plot_time_vs_points(rows, out, name, through, title):
     return [save(fig, os.path.join(out, name + ".png"))]
 
 
-def read_ratios(folder, file="targets_ratios.csv"):
+def read_ratios(folder, file="speed_ratios.csv"):
     path = os.path.join(folder, file)
     if not os.path.exists(path):
         return []
@@ -205,7 +205,7 @@ def read_ratios(folder, file="targets_ratios.csv"):
         return list(csv.DictReader(f))
 
 
-def targets_table(out, befores=(), file="targets_ratios.csv", column="ratio"):
+def targets_table(out, befores=(), file="speed_ratios.csv", column="ratio"):
     """The values rrht_benchmark printed for the targets, from `file` (whose
     values are in `column`), after those of the earlier results `befores` if
     given (columns named after the folders)."""
@@ -238,7 +238,7 @@ def targets_table(out, befores=(), file="targets_ratios.csv", column="ratio"):
 
 
 def plot_time_vs_k(rows, out):
-    """The defaults against k (targets, issue 16): a plot and a table of the
+    """The defaults against k (speed): a plot and a table of the
     median times, with their ratio to k = 100."""
     times = {}
     for r in rows:
@@ -678,13 +678,13 @@ def summary(rows):
     """The compact headline table the top-level README quotes: one row per estimator, and
     per cloud its share of normals above 10° and its time over jet_K80's with 2 threads
     (with 1 thread for the single-threaded)."""
-    datasets = OrderedDict((group_key(r), 0) for r in rows)
-    out = ["| estimator | " + " | ".join("%s (%dk): > 10°, time ÷ jet" % (d, n // 1000) for d, n in datasets) + " |",
-           "|---|" + "---|" * len(datasets)]
+    datasets = OrderedDict((r["dataset"], r["points"]) for r in rows)
+    out = ["| estimator | " + " | ".join("%s (%dk): > 10°, time ÷ jet" % (d, n // 1000) for d, n in datasets.items())
+           + " |", "|---|" + "---|" * len(datasets)]
     cell = {(r["dataset"], r["estimator"], r["threads"]): r for r in rows if r["status"] == "ok"}
     for name in OrderedDict((r["estimator"], 0) for r in rows):
         cells = []
-        for dataset, _ in datasets:
+        for dataset in datasets:
             threads = 2 if (dataset, name, 2) in cell else 1
             own, ref = cell.get((dataset, name, threads)), cell.get((dataset, REFERENCE, threads))
             if own is None:
@@ -729,7 +729,7 @@ def main():
         elif name == "scaling":
             images = plot_time_vs_points(rows, out, name, "RRHT_Points_c_fast",
                                          "Sphere, 0.2% noise, fast setting (T = 300, n_rot = 2)")
-        elif name == "targets":
+        elif name == "speed":
             images, against_k = plot_time_vs_k(rows, out)
             extra = targets_table(out, args.before) + against_k
         elif name == "fig7_confidence_interval":

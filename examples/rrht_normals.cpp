@@ -28,6 +28,7 @@
 #endif
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -72,17 +73,11 @@ const std::vector<std::string> input_extensions = { ".xyz", ".pwn", ".ply", ".of
 };
 const std::vector<std::string> output_extensions = { ".xyz", ".pwn", ".ply" };
 
-// The names of the choices of --setting, --sampling and --aggregation, each spelled once.
+// The names of the choices of --setting; those of --sampling and
+// --aggregation are the library's (CGAL::RRHT::sampling_names, aggregation_names).
 enum class Setting { DEFAULT, PAPER_PRECISE, PAPER_FAST };
-const std::vector<std::pair<std::string, Setting>> settings = {
-  { "default", Setting::DEFAULT }, { "paper_precise", Setting::PAPER_PRECISE }, { "paper_fast", Setting::PAPER_FAST }
-};
-const std::vector<std::pair<std::string, CGAL::RRHT::Sampling>> samplings = {
-  { "points", CGAL::RRHT::Sampling::POINTS }, { "cubes", CGAL::RRHT::Sampling::CUBES }, { "unif", CGAL::RRHT::Sampling::UNIF }
-};
-const std::vector<std::pair<std::string, CGAL::RRHT::Aggregation>> aggregations = {
-  { "mean", CGAL::RRHT::Aggregation::MEAN }, { "best", CGAL::RRHT::Aggregation::BEST },
-  { "cluster", CGAL::RRHT::Aggregation::CLUSTER }
+const std::array<std::pair<const char*, Setting>, 3> settings = {
+  { { "default", Setting::DEFAULT }, { "paper_precise", Setting::PAPER_PRECISE }, { "paper_fast", Setting::PAPER_FAST } }
 };
 
 // "a, b or c".
@@ -94,8 +89,8 @@ std::string one_of(const std::vector<std::string>& names)
   return list;
 }
 
-template <typename T>
-std::vector<std::string> names_of(const std::vector<std::pair<std::string, T>>& table)
+template <typename Table>
+std::vector<std::string> names_of(const Table& table)
 {
   std::vector<std::string> names;
   for(const auto& entry : table)
@@ -104,8 +99,8 @@ std::vector<std::string> names_of(const std::vector<std::pair<std::string, T>>& 
 }
 
 // The value of option `name` among the names of `table`.
-template <typename T>
-T choice(const po::variables_map& options, const char* name, const std::vector<std::pair<std::string, T>>& table)
+template <typename Table>
+auto choice(const po::variables_map& options, const char* name, const Table& table)
 {
   const std::string& value = options[name].as<std::string>();
   for(const auto& entry : table)
@@ -258,9 +253,9 @@ int main(int argc, char** argv)
     one_of(names_of(settings)) + ": least squares where the neighborhood is one smooth sheet, the adaptive Hough "
     "transform elsewhere (default), or the paper's settings, the Hough transform everywhere (paper_precise: T_R from "
     "eq. 7 and 5 rotations; paper_fast: 300 planes and 2 rotations, unless --planes or --rotations say otherwise)";
-  const std::string sampling_help = "triple sampling: " + one_of(names_of(samplings)) +
+  const std::string sampling_help = "triple sampling: " + one_of(names_of(CGAL::RRHT::sampling_names)) +
                                     " (with --adaptive, part of the default, only unif changes anything)";
-  const std::string aggregation_help = one_of(names_of(aggregations));
+  const std::string aggregation_help = one_of(names_of(CGAL::RRHT::aggregation_names));
   po::options_description described("Options");
   described.add_options()
     ("help,h", "print this help and exit")
@@ -360,9 +355,9 @@ int main(int argc, char** argv)
                       .least_squares_first(!paper || options.count("least-squares-first") > 0)
                       .adaptive(!paper || options.count("adaptive") > 0)
                       .refit(options.count("refit") > 0)
-                      .sampling(choice(options, "sampling", samplings))
+                      .sampling(choice(options, "sampling", CGAL::RRHT::sampling_names))
                       .presampling_factor(options["presampling"].as<long long>())
-                      .aggregation(choice(options, "aggregation", aggregations))
+                      .aggregation(choice(options, "aggregation", CGAL::RRHT::aggregation_names))
                       .cluster_angle(options["cluster-angle"].as<double>())
                       .random_seed(static_cast<unsigned int>(options["seed"].as<long long>()))
                       .callback(callback)

@@ -7,7 +7,8 @@ packages=(g++ make cmake libcgal-dev libeigen3-dev libboost-dev libboost-program
 for argument in "$@"; do
   if [ "$argument" = --python ]; then
     packages+=(python3-dev python3-venv python3-pip python3-setuptools python3-wheel python3-numpy
-               python3-pybind11 pybind11-dev python3-tqdm python3-open3d python3-pytest python3-distributed)
+               python3-pybind11 pybind11-dev python3-tqdm python3-open3d python3-pytest python3-distributed
+               python3-matplotlib)
   else
     packages+=("$argument")
   fi

@@ -3,7 +3,8 @@
 #  1. builds in Release against the system's CGAL (with a smoke run of the
 #     benchmark and the Python module) and runs the whole suite with ctest,
 #     the Python tests (pytest) included;
-#  1b. installs the Python package as a user does (pip install
+#  1b. runs the README's demo (scripts/demo.sh) on that build, and installs
+#     the Python package as a user does (pip install
 #     --no-build-isolation . in a virtual environment on Debian's Python
 #     packages, without network) and runs the Python tests on it;
 #  2. builds again with AddressSanitizer and UndefinedBehaviorSanitizer and
@@ -66,6 +67,9 @@ same_normals() { # build, reference build
 echo "== Release build and tests (system CGAL), the Python module's included"
 run_suite "$root/build/release" -DCMAKE_BUILD_TYPE=Release -DCGAL_RRHT_BUILD_BENCHMARKS=ON \
           -DCGAL_RRHT_BUILD_PYTHON=ON -DPython_EXECUTABLE="$python"
+
+echo "== The README's first command: the demo (on the build above)"
+bash "$root/scripts/demo.sh"
 
 echo "== The Python package installed by pip in a virtual environment, and its tests"
 venv=$root/build/venv

@@ -26,10 +26,12 @@ __version__ = "0.1.0"
 #: The values of ``setting``: least squares first with the adaptive Hough transform
 #: (the default), and the paper's precise and fast settings (Section 6).
 SETTINGS = ("default", "paper_precise", "paper_fast")
-#: The values of ``sampling``: RRHT_Points, RRHT_Cubes, RRHT_Unif (paper, Section 5).
-SAMPLINGS = ("points", "cubes", "unif")
-#: The values of ``aggregation``: RRHT_m, RRHT_b, RRHT_c (paper, Section 4).
-AGGREGATIONS = ("mean", "best", "cluster")
+#: The values of ``sampling``: RRHT_Points, RRHT_Cubes, RRHT_Unif (paper, Section 5),
+#: as the C++ library names them.
+SAMPLINGS: Tuple[str, ...] = _core.SAMPLINGS
+#: The values of ``aggregation``: RRHT_m, RRHT_b, RRHT_c (paper, Section 4), as the C++
+#: library names them.
+AGGREGATIONS: Tuple[str, ...] = _core.AGGREGATIONS
 # The neighbors of estimate_normals(orient="consistent"): those of rrht_normals --orient.
 _CONSISTENT_K = 18
 
@@ -335,21 +337,21 @@ def estimate_normals(
     extra = None if neighbors is None else _points(neighbors, "neighbors", "M")
     fast = _name(setting, SETTINGS, "setting") == "paper_fast"
     arguments = dict(
-        k=_integer(k, "k"),
+        k=k,
         radius=None if radius is None else float(radius),
-        planes=_integer(planes, "planes") if planes is not None else 300 if fast else None,
-        rotations=_integer(rotations, "rotations") if rotations is not None else 2 if fast else 5,
-        slices=_integer(slices, "slices"),
+        planes=planes if planes is not None else 300 if fast else None,
+        rotations=rotations if rotations is not None else 2 if fast else 5,
+        slices=slices,
         confidence_interval=bool(confidence_interval),
-        sampling=_name(sampling, SAMPLINGS, "sampling"),
-        presampling=_integer(presampling, "presampling"),
-        aggregation=_name(aggregation, AGGREGATIONS, "aggregation"),
+        sampling=str(sampling),
+        presampling=presampling,
+        aggregation=str(aggregation),
         cluster_angle=float(cluster_angle),
-        seed=_integer(seed, "seed"),
+        seed=seed,
         least_squares_first=_from_setting(least_squares_first, setting),
         adaptive=_from_setting(adaptive, setting),
         refit=bool(refit),
-        threads=None if threads is None else _integer(threads, "threads"),
+        threads=threads,
         return_confidence=bool(return_confidence),
         return_support=bool(return_support),
     )
@@ -500,8 +502,7 @@ def orient_normals(
     if np.may_share_memory(oriented, normals):
         oriented = oriented.copy()
     orientation = _orientation(direction, viewpoint, len(array))
-    _core.orient_normals(array, oriented, k=_integer(k, "k"),
-                         threads=None if threads is None else _integer(threads, "threads"), **orientation)
+    _core.orient_normals(array, oriented, k=k, threads=threads, **orientation)
     return oriented
 
 
@@ -595,15 +596,6 @@ def _ids(ids: npt.ArrayLike, count: int, name: str) -> npt.NDArray[np.uint64]:
     if array.dtype.kind == "i" and count and array.min() < 0:
         raise ValueError(f"{name} must be non-negative")
     return np.ascontiguousarray(array, dtype=np.uint64)
-
-
-def _integer(value: object, name: str) -> int:
-    """``value`` (a Python or NumPy integer) as an int; its range is checked by the C++ side."""
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
-        raise TypeError(f"{name} must be an integer, not {type(value).__name__}")
-    if not -(2**63) <= value < 2**63:
-        raise ValueError(f"{name} is out of range: {value}")
-    return int(value)
 
 
 def _from_setting(flag: Optional[bool], setting: object) -> bool:

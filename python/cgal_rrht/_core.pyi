@@ -4,6 +4,9 @@ from typing import Callable, Optional, Tuple
 import numpy as np
 import numpy.typing as npt
 
+SAMPLINGS: Tuple[str, ...]
+AGGREGATIONS: Tuple[str, ...]
+
 def estimate_normals(
     points: npt.NDArray[np.float64],
     neighbors: Optional[npt.NDArray[np.float64]],
@@ -19,6 +22,7 @@ def estimate_normals(
     aggregation: str,
     cluster_angle: float,
     seed: int,
+    least_squares_first: bool,
     adaptive: bool,
     refit: bool,
     threads: Optional[int],

@@ -30,7 +30,6 @@
 #include <exception>
 #include <functional>
 #include <limits>
-#include <map>
 #include <mutex>
 #include <numeric>
 #include <optional>
@@ -133,35 +132,62 @@ struct Row_id_map
   friend std::uint64_t get(const Row_id_map& map, std::size_t i) { return map.data ? map.data[i] : i; }
 };
 
-template <typename Enum>
-Enum from_name(const std::string& name, const std::map<std::string, Enum>& names, const char* what)
+/// The value named `name` in one of the library's name tables
+/// (`CGAL::RRHT::sampling_names`, `aggregation_names`), or a ValueError
+/// listing the names.
+template <typename Table>
+auto from_name(const std::string& name, const Table& names, const char* what)
 {
-  const auto found = names.find(name);
-  if(found != names.end())
-    return found->second;
   std::string valid;
   for(const auto& entry : names)
-    valid += (valid.empty() ? "'" : ", '") + entry.first + "'";
+  {
+    if(entry.first == name)
+      return entry.second;
+    valid += (valid.empty() ? "'" : ", '") + std::string(entry.first) + "'";
+  }
   throw py::value_error("unknown " + std::string(what) + " '" + name + "': use one of " + valid);
 }
 
-/// A count given from Python (any integer) as the C++ type, or a ValueError.
-template <typename Count>
-Count count(long long value, const char* what)
+/// The names of a name table, as a tuple (cgal_rrht.SAMPLINGS, AGGREGATIONS).
+template <typename Table>
+py::tuple names_of(const Table& names)
 {
-  if(value < 0 || static_cast<unsigned long long>(value) > std::numeric_limits<Count>::max())
-    throw py::value_error(std::string(what) + " must be from 0 to " + std::to_string(std::numeric_limits<Count>::max()) +
-                          ", got " + std::to_string(value));
-  return static_cast<Count>(value);
+  py::list list;
+  for(const auto& entry : names)
+    list.append(entry.first);
+  return py::tuple(list);
 }
 
-/// The threads of a call (`threads` of the Python functions): 0, TBB's
-/// default (all cores), or 1 to 1024, the bound of rrht_normals --threads.
-int thread_count(const std::optional<long long>& threads)
+/// An integer argument of the Python functions (a Python or NumPy integer,
+/// not a bool) as the C++ type: a TypeError for another type, a ValueError
+/// outside the type's range. The binding's one check of its integers; the
+/// library checks the ranges of its parameters itself.
+template <typename Integer>
+Integer integer(const py::handle& value, const char* what)
 {
-  if(threads && (*threads < 1 || *threads > 1024))
-    throw py::value_error("threads must be from 1 to 1024, got " + std::to_string(*threads));
-  return threads ? int(*threads) : 0;
+  if(PyBool_Check(value.ptr()) || !PyIndex_Check(value.ptr()))
+    throw py::type_error(std::string(what) + " must be an integer, not " +
+                         py::str(value.get_type().attr("__name__")).cast<std::string>());
+  const auto number = py::reinterpret_steal<py::int_>(PyNumber_Index(value.ptr()));
+  if(!number)
+    throw py::error_already_set();
+  const Integer low = std::numeric_limits<Integer>::min(), high = std::numeric_limits<Integer>::max();
+  if(number < py::int_(low) || number > py::int_(high))
+    throw py::value_error(std::string(what) + " must be from " + std::to_string(low) + " to " + std::to_string(high) +
+                          ", got " + py::repr(number).cast<std::string>());
+  return number.cast<Integer>();
+}
+
+/// The threads of a call (`threads` of the Python functions): None, TBB's
+/// default (all cores), or 1 to 1024, the bound of rrht_normals --threads.
+int thread_count(const py::handle& threads)
+{
+  if(threads.is_none())
+    return 0;
+  const long long count = integer<long long>(threads, "threads");
+  if(count < 1 || count > 1024)
+    throw py::value_error("threads must be from 1 to 1024, got " + std::to_string(count));
+  return int(count);
 }
 
 /// Whether `array` has the shape (rows, 3): a guard for the memory read, the
@@ -317,8 +343,8 @@ void orient_normals(const py::array_t<double, py::array::c_style>& points,
                     py::array_t<double, py::array::c_style>& normals,
                     const std::optional<std::array<double, 3>>& direction,
                     const std::optional<std::array<double, 3>>& viewpoint,
-                    const std::optional<py::array_t<double, py::array::c_style>>& viewpoints, long long k,
-                    const std::optional<long long>& threads)
+                    const std::optional<py::array_t<double, py::array::c_style>>& viewpoints, const py::handle& k,
+                    const py::handle& threads)
 {
   if(points.ndim() != 2 || points.shape(1) != 3)
     throw py::value_error("points must have the shape (N, 3)");
@@ -328,7 +354,7 @@ void orient_normals(const py::array_t<double, py::array::c_style>& points,
     check_rows(*viewpoints, size, "viewpoints");
   if(int(direction.has_value()) + int(viewpoint.has_value()) + int(viewpoints.has_value()) > 1)
     throw py::value_error("give direction or viewpoint, not both");
-  const unsigned int neighbors = count<unsigned int>(k, "k");
+  const unsigned int neighbors = integer<unsigned int>(k, "k");
   const int thread_limit = thread_count(threads);
   std::vector<std::size_t> rows(size);
   std::iota(rows.begin(), rows.end(), std::size_t(0));
@@ -358,37 +384,32 @@ PYBIND11_MODULE(_core, m)
 {
   m.doc() = "CGAL::rrht_estimate_normals() and CGAL::rrht_orient_normals() on NumPy arrays; use "
             "cgal_rrht.estimate_normals() and cgal_rrht.orient_normals().";
+  m.attr("SAMPLINGS") = names_of(CGAL::RRHT::sampling_names);
+  m.attr("AGGREGATIONS") = names_of(CGAL::RRHT::aggregation_names);
   m.def(
     "estimate_normals",
     [](const py::array_t<double, py::array::c_style>& points,
        const std::optional<py::array_t<double, py::array::c_style>>& neighbors,
-       const std::optional<py::array_t<std::uint64_t, py::array::c_style>>& ids, long long k, std::optional<double> radius,
-       std::optional<long long> planes, long long rotations, long long slices, bool confidence_interval,
-       const std::string& sampling, long long presampling, const std::string& aggregation, double cluster_angle,
-       long long seed, bool least_squares_first, bool adaptive, bool refit, std::optional<long long> threads,
+       const std::optional<py::array_t<std::uint64_t, py::array::c_style>>& ids, const py::handle& k,
+       std::optional<double> radius, const py::handle& planes, const py::handle& rotations, const py::handle& slices,
+       bool confidence_interval, const std::string& sampling, const py::handle& presampling,
+       const std::string& aggregation, double cluster_angle, const py::handle& seed, bool least_squares_first,
+       bool adaptive, bool refit, const py::handle& threads,
        bool return_confidence,
        bool return_support, const std::function<void(double)>& progress) {
       Options options;
-      options.k = count<unsigned int>(k, "k");
+      options.k = integer<unsigned int>(k, "k");
       options.radius = radius.value_or(0.);
-      options.planes = planes;
-      options.rotations = rotations;
-      options.slices = slices;
-      options.presampling = presampling;
+      if(!planes.is_none())
+        options.planes = integer<long long>(planes, "planes");
+      options.rotations = integer<long long>(rotations, "rotations");
+      options.slices = integer<long long>(slices, "slices");
+      options.presampling = integer<long long>(presampling, "presampling");
       options.confidence_interval = confidence_interval;
-      options.sampling = from_name(sampling,
-                                   std::map<std::string, CGAL::RRHT::Sampling>{{"points", CGAL::RRHT::Sampling::POINTS},
-                                                                              {"cubes", CGAL::RRHT::Sampling::CUBES},
-                                                                              {"unif", CGAL::RRHT::Sampling::UNIF}},
-                                   "sampling");
-      options.aggregation = from_name(
-        aggregation,
-        std::map<std::string, CGAL::RRHT::Aggregation>{{"mean", CGAL::RRHT::Aggregation::MEAN},
-                                                      {"best", CGAL::RRHT::Aggregation::BEST},
-                                                      {"cluster", CGAL::RRHT::Aggregation::CLUSTER}},
-        "aggregation");
+      options.sampling = from_name(sampling, CGAL::RRHT::sampling_names, "sampling");
+      options.aggregation = from_name(aggregation, CGAL::RRHT::aggregation_names, "aggregation");
       options.cluster_angle = cluster_angle;
-      options.seed = count<unsigned int>(seed, "seed");
+      options.seed = integer<unsigned int>(seed, "seed");
       options.least_squares_first = least_squares_first;
       options.adaptive = adaptive;
       options.refit = refit;

@@ -7,7 +7,7 @@ import re
 import subprocess
 import sys
 
-import pytest
+import open3d as o3d
 
 from conftest import ROOT
 
@@ -15,8 +15,6 @@ EXAMPLE = ROOT / "examples" / "python" / "open3d_pipeline.py"
 
 
 def test_open3d_pipeline(tmp_path):
-    o3d = pytest.importorskip("open3d")
-    pytest.importorskip("matplotlib")
     run = subprocess.run([sys.executable, str(EXAMPLE), "--output", str(tmp_path)], capture_output=True, text=True,
                          timeout=600)
     assert run.returncode == 0, run.stderr

@@ -3,13 +3,12 @@
 """cgal_rrht.open3d.estimate_normals() and orient_normals() on an Open3D point cloud."""
 
 import numpy as np
+import open3d as o3d
 import pytest
 
 import cgal_rrht
 import cgal_rrht.open3d
 from conftest import angle_errors_deg, noisy_cube
-
-o3d = pytest.importorskip("open3d")
 
 
 def test_fills_the_normals_of_a_point_cloud(fandisk):

@@ -11,7 +11,6 @@ import threading
 import time
 import tracemalloc
 
-import numpy as np
 import pytest
 
 import cgal_rrht

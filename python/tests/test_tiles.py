@@ -15,11 +15,12 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+import distributed
+
 import cgal_rrht
+from cgal_rrht import tiles
 from cgal_rrht.point_files import PointFile, write_points
 
-distributed = pytest.importorskip("distributed", reason="Dask's distributed scheduler (Debian: python3-distributed)")
-tiles = pytest.importorskip("cgal_rrht.tiles")
 # Dask's event loop on Debian 12's tornado.
 pytestmark = pytest.mark.filterwarnings("ignore:make_current is deprecated:DeprecationWarning")
 

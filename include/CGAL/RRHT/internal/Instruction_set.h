@@ -24,8 +24,6 @@
 /// same bits (tested). Eigen's own vectorization, fixed when it is
 /// compiled, is the same in both.
 ///
-/// What it gains is measured in `benchmark/results/targets/README.md`.
-///
 /// GCC on x86-64 (the `target` attribute and `__builtin_cpu_supports()`),
 /// unless the build already targets AVX2 or `CGAL_RRHT_NO_AVX2_KERNELS` is
 /// defined; otherwise 0, and the loops are those of the build's target.

@@ -80,8 +80,7 @@ bool has_finite_coordinates(const Point& p)
 /// The points, all with finite coordinates, are stored in the order of a Hilbert curve
 /// (`CGAL::hilbert_sort()`), and queries are made by position in that order:
 /// points close in space are close in memory, so consecutive queries walk
-/// the same branches of the tree and read the same cache lines (measured in
-/// `benchmark/results/targets/README.md`).
+/// the same branches of the tree and read the same cache lines.
 class Neighbor_search
 {
 public:

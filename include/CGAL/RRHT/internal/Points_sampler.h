@@ -298,10 +298,10 @@ private:
   }
 
   // Up to this many triples per draw of a run, listing them is faster than
-  // drawing at random (`benchmark/results/targets/README.md`).
+  // drawing at random; the `speed` benchmark's time against k checks it.
   static constexpr std::uint64_t list_factor = 4;
   // Up to this many bits per draw of a run, the bitmap, cleared at each
-  // run, is faster than the filter (`benchmark/results/targets/README.md`).
+  // run, is faster than the filter (same check).
   static constexpr std::uint64_t bitmap_factor = 256;
   // Ranks computed in 32 bits: last * (last - 1) * (last - 2) below 2^32.
   static constexpr std::uint32_t bitmap_limit = 1024;

@@ -48,8 +48,7 @@ namespace internal {
 /// instead of anywhere in B_P; dividing by the number of nodes of B(q, s),
 /// which varies with q's place among them, corrects the volume of the small
 /// ball. L = 3 keeps the total variation distance to the integral near 2%
-/// (tested against the paper's procedure; the choice of L is measured in
-/// `benchmark/results/targets/README.md`).
+/// (tested against the paper's procedure) at a fraction of a larger L's cost.
 ///
 /// In units of h, B_P has radius R = c L around the origin, and the nodes
 /// are the points t + δ, t an integer vector in [-R, R]^3 and δ the random
