@@ -1,0 +1,172 @@
+# Copyright (c) 2026 The CGAL RRHT authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""The orientation experiment's part of benchmark/report.py: rrht_orient_normals
+against mst_orient_normals (and Open3D), its tables and its plot."""
+
+import csv
+import os
+from collections import OrderedDict, defaultdict
+
+from report_plots import plt, save
+from report_tables import fmt_time
+
+ORIENTATION_TARGETS = ("Targets: closed shapes ≥ 99.9% outward (≤ 0.1% against the outward normal, within 60°); "
+                       "open shapes ≥ 99% consistent (≤ 1% on the minority side); the orientation's time ≤ the "
+                       "estimation's at 100k and 1M points.")
+
+
+def orientation_cloud(r):
+    """"cube, 0.2% noise": the cloud of a row of orientation_quality.csv."""
+    if int(r["outliers"]):
+        return "%s, +%g%% outliers" % (r["dataset"], float(r["outliers_percent"]))
+    noise = float(r["noise_percent"])
+    return "%s, %s" % (r["dataset"], "%g%% noise" % noise if noise else "clean")
+
+
+def orientation_wide(rows, pipelines, value, title):
+    """A table with a row per cloud and a column per pipeline, `value(row)` in each cell."""
+    clouds = OrderedDict()
+    for r in rows:
+        clouds.setdefault(orientation_cloud(r), {})[r["pipeline"]] = r
+    lines = ["\n%s\n" % title, "| cloud | " + " | ".join(pipelines) + " |", "|---|" + "---|" * len(pipelines)]
+    for cloud, by_pipeline in clouds.items():
+        cells = []
+        for p in pipelines:
+            r = by_pipeline.get(p)
+            cells.append("not run" if r is None else (value(r) if r["status"] == "ok" else r["status"]))
+        lines.append("| %s | %s |" % (cloud, " | ".join(cells)))
+    return lines
+
+
+def orientation_floors(out, kind, target):
+    """The sentences of orientation_floor.csv on the clouds of `kind`: the
+    share of the points nearer the other side of a thin part than their own,
+    a floor for the share of wrong orientations, against the `target`."""
+    path = os.path.join(out, "orientation_floor.csv")
+    if not os.path.exists(path):
+        return []
+    md = []
+    with open(path, newline="") as f:
+        for r in csv.DictReader(f):
+            if r.get("kind", "closed") != kind:
+                continue
+            floor = float(r["floor_percent"])
+            md.append("\nThe floor on %s with %s%% noise: %.3f%% of its points lie nearer the other side of a thin "
+                      "part than their own; no orientation from the points alone can tell their side%s.\n"
+                      % (r["cloud"], r["noise_percent"], floor,
+                         ", and the target of %g is out of reach there" % target if floor > target else ""))
+    return md
+
+
+def orientation_report(rows, out):
+    """orientation.md: the quality tables of orientation_quality.csv, the time
+    against the number of points of orientation.csv (plot), and the targets."""
+    path = os.path.join(out, "orientation_quality.csv")
+    quality = []
+    if os.path.exists(path):
+        with open(path, newline="") as f:
+            quality = list(csv.DictReader(f))
+    pipelines = list(OrderedDict((r["pipeline"], 0) for r in quality))
+    md = [ORIENTATION_TARGETS + "\n"]
+    closed = [r for r in quality if r["kind"] == "closed"]
+    if closed:
+        md += orientation_wide(closed, pipelines,
+                               lambda r: "%.3f (%.1f%%)" % (float(r["wrong_percent"]), float(r["counted_percent"])),
+                               "### Closed shapes: % of the normals pointing against the exact outward normal, among "
+                               "those within 60° of its line (in brackets: their share of the surface points). "
+                               "Target ≤ 0.1")
+        md += orientation_wide(closed, pipelines, lambda r: "%.3f" % float(r["wrong_all_percent"]),
+                               "### Closed shapes: the same over all surface points (a null normal counts as wrong)")
+        md += orientation_wide(closed, pipelines, lambda r: "%.3f" % float(r["up_to_flip_percent"]),
+                               "### Closed shapes: up to a global flip (the minority side, within 60°): 0 where the "
+                               "normals are consistent, pointing out or all in")
+        md += orientation_floors(out, "closed", 0.1)
+        met = [r for r in closed if r["pipeline"] == pipelines[0] and r["met"] == "yes"]
+        md.append("\n%s meets the target on %d of %d closed clouds.\n" % (
+            pipelines[0], len(met), sum(1 for r in closed if r["pipeline"] == pipelines[0])))
+    opened = [r for r in quality if r["kind"] == "open"]
+    if opened:
+        md += orientation_wide(opened, pipelines,
+                               lambda r: "%.3f (%.1f%%)" % (float(r["wrong_percent"]), float(r["counted_percent"])),
+                               "### Open shapes: % of the normals on the minority side, among those within 60° of "
+                               "the exact normal's line (in brackets: their share). Target ≤ 1")
+        md += orientation_floors(out, "open", 1)
+        md += orientation_wide(opened, pipelines, lambda r: "%.3f" % float(r["wrong_all_percent"]),
+                               "### Open shapes: the same over all points")
+    scans = [r for r in quality if r["kind"] == "scan"]
+    if scans:
+        md += orientation_wide(scans, pipelines, lambda r: "%.3f" % float(r["wrong_percent"]),
+                               "### Real scan (no truth): % of the points whose oriented normal disagrees in sign with "
+                               "most of their 10 nearest neighbors (only neighbors within 60° of the point's normal "
+                               "line vote). Target ≤ 1")
+    unoriented = [r for r in quality if r["status"] == "ok" and int(r["not_oriented"])]
+    if unoriented:
+        md += ["\n### Points left unoriented (moved to the end of the range)\n", "| cloud | pipeline | points |",
+               "|---|---|---|"]
+        md += ["| %s | %s | %s |" % (orientation_cloud(r), r["pipeline"], r["not_oriented"]) for r in unoriented]
+    if quality:
+        md += ["\n### Time of each step on the 100k-point clouds (one run, 2 threads; median over the clouds)\n",
+               "| pipeline | normals (s) | orientation (s) | clouds |", "|---|---|---|---|"]
+        for p in pipelines:
+            ok = [r for r in quality if r["pipeline"] == p and r["status"] == "ok"]
+            if ok:
+                normals = sorted(float(r["normals_s"]) for r in ok)
+                orient = sorted(float(r["orient_s"]) for r in ok)
+                md.append("| %s | %.3f | %.3f | %d |" % (p, normals[len(normals) // 2], orient[len(orient) // 2],
+                                                         len(ok)))
+        md.append("\nOpen3D's own pipeline is one step (estimation and orientation together): its time is in the "
+                  "orientation column.\n")
+    images = []
+    times, above10 = defaultdict(dict), {}
+    for r in rows:
+        if r["status"] == "ok":
+            times[r["estimator"]][r["points"]] = r["median_s"]
+            if r["estimator"] == rows[0]["estimator"]:  # the estimation: how far off the normals to orient are
+                above10[r["points"]] = r["above10_percent"]
+    if times:
+        names = list(OrderedDict((r["estimator"], 0) for r in rows))
+        sizes = sorted({r["points"] for r in rows})
+        dataset = rows[0]["dataset"]
+        md += ["\n## Time against the number of points (%s, %g%% noise, 2 threads, median of the rounds)\n" % (
+                   dataset, rows[0]["noise_percent"]),
+               "| points | " + " | ".join("%s (s)" % n for n in names) + " | %s per point (µs) | " % names[1]
+               + "%s normals > 10° (%%) |" % names[0],
+               "|---|" + "---|" * (len(names) + 2)]
+        for n in sizes:
+            cells = [fmt_time(times[e][n]) if n in times[e] else "—" for e in names]
+            per_point = "%.2f" % (1e6 * times[names[1]][n] / n) if n in times[names[1]] else "—"
+            md.append("| %d | %s | %s | %s |" % (n, " | ".join(cells), per_point,
+                                                 "%.1f" % above10[n] if n in above10 else "—"))
+        md.append("\nThe noise is a fixed share of the diagonal: the denser the cloud, the noisier the neighborhoods "
+                  "and the farther off the normals to orient (last column).")
+        failed = [r for r in rows if r["status"] != "ok"]
+        if failed:
+            md.append("\n" + "; ".join("%s at %d points: %s" % (r["estimator"], r["points"], r["status"])
+                                       for r in failed) + ".")
+        fig, ax = plt.subplots(figsize=(7, 5))
+        for name in names:
+            points = sorted(times[name].items())
+            if points:
+                ax.plot([p[0] for p in points], [p[1] for p in points], marker="o", markersize=3, label=name)
+        first = sorted(times[names[1]].items())
+        if first:
+            n0, t0 = first[0]
+            ax.plot(sizes, [t0 * n / n0 for n in sizes], color="gray", linestyle="--", linewidth=0.8,
+                    label="∝ n through %s at %d" % (names[1], n0))
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel("number of points")
+        ax.set_ylabel("time (s), 2 threads (mst_orient_normals: 1)")
+        ax.set_title("%s, %g%% noise: orientation against estimation" % (dataset, rows[0]["noise_percent"]))
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=7)
+        images.append(save(fig, os.path.join(out, "orientation_time.png")))
+    path = os.path.join(out, "orientation_targets.csv")
+    if os.path.exists(path):
+        with open(path, newline="") as f:
+            targets = list(csv.DictReader(f))
+        md += ["\n### Time targets (median of the ratios round by round)\n", "| target | ratio | bound | met | rounds |",
+               "|---|---|---|---|---|"]
+        md += ["| %s | %.3f | %s | %s | %s |" % (r["target"], float(r["ratio"]), r["bound"], r["met"], r["rounds"])
+               for r in targets]
+    return images, "\n".join(md) + "\n\n## Every measurement of the time part\n"
