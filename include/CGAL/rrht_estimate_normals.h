@@ -17,15 +17,13 @@
 #include <CGAL/RRHT/internal/Cube_weights.h>
 #include <CGAL/RRHT/internal/Elements.h>
 #include <CGAL/RRHT/internal/Neighbor_search.h>
+#include <CGAL/RRHT/internal/Pass_context.h>
 #include <CGAL/RRHT/internal/Progress.h>
-#include <CGAL/RRHT/internal/Scratch.h>
-#include <CGAL/RRHT/internal/Settings.h>
+#include <CGAL/RRHT/internal/adaptive.h>
 #include <CGAL/RRHT/internal/check_parameters.h>
-#include <CGAL/RRHT/internal/estimate_normal.h>
-#include <CGAL/RRHT/internal/for_each_block.h>
+#include <CGAL/RRHT/internal/hough_transform_passes.h>
 #include <CGAL/RRHT/internal/least_squares_first.h>
-#include <CGAL/RRHT/internal/refit_normal.h>
-#include <CGAL/RRHT/internal/support_radius.h>
+#include <CGAL/RRHT/internal/read_parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Named_function_parameters.h>
@@ -410,41 +408,9 @@ void rrht_estimate_normals(PointRange& points,
     choose_parameter(get_parameter(np, internal_np::callback), std::function<bool(double)>());
 
   // The parameters (paper, Section 6), checked before anything is written.
-  using RRHT::internal::check;
-  const double neighbor_radius = CGAL::to_double(choose_parameter(get_parameter(np, internal_np::neighbor_radius), FT(0)));
-  check(std::isfinite(neighbor_radius) && neighbor_radius >= 0, "neighbor_radius must be finite and non-negative");
-  check(k > 0 || neighbor_radius > 0, "k must be at least 1 when no neighbor_radius is given");
-  const unsigned int accumulator_slices = RRHT::internal::count_in_range<unsigned int>(
-    choose_parameter(get_parameter(np, rrht_np::accumulator_slices), 15u), 1, 1000, "accumulator_slices (n_phi)");
-  const RRHT::internal::Bin_layout layout(accumulator_slices);
-
-  RRHT::internal::Settings settings;
-  settings.k = k;
-  settings.neighbor_radius = neighbor_radius;
-  settings.number_of_planes = RRHT::internal::count_in_range<std::size_t>(
-    choose_parameter(get_parameter(np, rrht_np::number_of_planes), RRHT::hoeffding_number_of_planes(layout.size())),
-    1, 100000000, "number_of_planes (T_R)");
-  settings.use_confidence_interval = choose_parameter(get_parameter(np, rrht_np::use_confidence_interval), true);
-  settings.sampling = choose_parameter(get_parameter(np, rrht_np::sampling), RRHT::Sampling::POINTS);
-  check(settings.sampling == RRHT::Sampling::POINTS || settings.sampling == RRHT::Sampling::CUBES ||
-        settings.sampling == RRHT::Sampling::UNIF, "unknown sampling");
-  settings.presampling_factor = RRHT::internal::count_in_range<unsigned int>(
-    choose_parameter(get_parameter(np, rrht_np::presampling_factor), 4u), 1, 32, "presampling_factor (c)");
-  settings.number_of_rotations = RRHT::internal::count_in_range<unsigned int>(
-    choose_parameter(get_parameter(np, rrht_np::number_of_rotations), 5u), 1, 100000, "number_of_rotations (n_rot)");
-  settings.aggregation = choose_parameter(get_parameter(np, rrht_np::aggregation), RRHT::Aggregation::CLUSTER);
-  check(settings.aggregation == RRHT::Aggregation::MEAN || settings.aggregation == RRHT::Aggregation::BEST ||
-        settings.aggregation == RRHT::Aggregation::CLUSTER, "unknown aggregation");
-  const double cluster_angle = choose_parameter(get_parameter(np, rrht_np::cluster_angle), 45.);
-  check(cluster_angle >= 0 && cluster_angle <= 180, "cluster_angle must be from 0 to 180 degrees");
-  settings.cos_cluster_angle = std::cos(cluster_angle * CGAL_PI / 180.);
-  settings.seed = choose_parameter(get_parameter(np, internal_np::random_seed), 0u);
-  const bool adaptive = choose_parameter(get_parameter(np, rrht_np::adaptive), true);
-  const bool refit = choose_parameter(get_parameter(np, rrht_np::refit), false);
-  const bool least_squares_first = choose_parameter(get_parameter(np, rrht_np::least_squares_first), true);
-  check(!least_squares_first ||
-          std::size_t(std::distance(points.begin(), points.end())) <= (std::numeric_limits<std::uint32_t>::max)(),
-        "least_squares_first handles at most 2^32 - 1 points at once: process larger clouds in tiles");
+  const RRHT::internal::Parameters checked = RRHT::internal::read_parameters<FT>(points, k, np);
+  RRHT::internal::Settings settings = checked.settings;
+  const RRHT::internal::Bin_layout layout(checked.accumulator_slices);
 
   // The finite points of the cloud in double precision, in one kd-tree along
   // a Hilbert curve, with their ids if a point_id_map is given. The others
@@ -485,115 +451,44 @@ void rrht_estimate_normals(PointRange& points,
   std::vector<std::uint64_t>().swap(ids);
   const std::size_t size = search.size();
   settings.k = static_cast<unsigned int>((std::min<std::size_t>)(k, size - 1));
+  const RRHT::internal::Adaptive_stages stages(settings);
+  const bool cubes = checked.adaptive ? stages.spatial.sampling == RRHT::Sampling::CUBES
+                                         : settings.sampling == RRHT::Sampling::CUBES;
+  const RRHT::internal::Cube_weights cube_weights(cubes ? settings.presampling_factor : 1);
+
+  // Where the passes write the results of a point, by its position in the search.
+  auto element = [&](std::size_t i) { return elements.at(points.begin(), search.input_index(i)); };
+  RRHT::internal::Pass_output output;
+  output.normal = [&](std::size_t i, const Eigen::Vector3d& n) {
+    put(normal_map, *element(i), Vector_3(FT(n.x()), FT(n.y()), FT(n.z())));
+  };
+  output.confidence = [&](std::size_t i, double confidence) { put(confidence_map, *element(i), confidence); };
+  output.support = [&](std::size_t i, double radius) { put(support_radius_map, *element(i), radius); };
   // A cloud of at most k points is every point's neighborhood: each normal
   // depends on all of it, and has an infinite support.
-  const bool whole_cloud = settings.k < k;
-  auto support_of = [whole_cloud](const RRHT::internal::Neighborhood& neighborhood) {
-    return whole_cloud || !neighborhood.complete ? std::numeric_limits<double>::infinity() : neighborhood.radius;
-  };
-  const RRHT::internal::Adaptive_stages stages(settings);
-  const bool cubes = adaptive ? stages.spatial.sampling == RRHT::Sampling::CUBES : settings.sampling == RRHT::Sampling::CUBES;
-  const RRHT::internal::Cube_weights cube_weights(cubes ? settings.presampling_factor : 1);
+  const RRHT::internal::Pass_context context{ search,        settings,      layout, cube_weights,
+                                              neighbor_only, settings.k < k, output };
 
   constexpr bool with_supports =
     !std::is_same<typename std::decay<decltype(get_parameter(np, rrht_np::support_radius_map))>::type,
                   internal_np::Param_not_found>::value;
-  auto make_scratch = [&]() { return RRHT::internal::Scratch(layout, cube_weights, settings.presampling_factor); };
-  auto estimated = [&](std::size_t i) { return neighbor_only.empty() || !neighbor_only[search.input_index(i)]; };
-
-  if(least_squares_first)
+  const RRHT::internal::Adaptive_stages* adaptive = checked.adaptive ? &stages : nullptr;
+  if(checked.least_squares_first)
   {
+    // Jet fitting's quadric where the neighborhood is one smooth sheet, the
+    // Hough transform elsewhere.
     constexpr bool with_confidences =
       !std::is_same<typename std::decay<decltype(get_parameter(np, rrht_np::confidence_map))>::type,
                     internal_np::Param_not_found>::value;
-    const RRHT::internal::Least_squares_first_options options{ adaptive ? &stages : nullptr, refit, with_confidences,
-                                                               with_supports };
     RRHT::internal::Progress progress(callback, 3 * size);
     RRHT::internal::least_squares_first<ConcurrencyTag>(
-      search, settings, options, progress, make_scratch, estimated, support_of,
-      [&](std::size_t i, const Eigen::Vector3d& normal, double confidence, double support) {
-        const auto element = elements.at(points.begin(), search.input_index(i));
-        put(normal_map, *element, Vector_3(FT(normal.x()), FT(normal.y()), FT(normal.z())));
-        put(confidence_map, *element, confidence);
-        put(support_radius_map, *element, support);
-      });
+      context, { adaptive, checked.refit, with_confidences, with_supports }, progress);
     progress.finish();
     return;
   }
-
-  // With `refit`, each RRHT normal is kept, with the noise deviation
-  // estimated around it (and the radius of its neighborhood, for the
-  // supports), for the second pass below.
-  std::vector<Eigen::Vector3d> rrht_normals(refit ? size : 0);
-  std::vector<double> noise(refit ? size : 0);
-  std::vector<double> radii(refit && with_supports ? size : 0);
-
-  // Section 2, point by point: the planes through random triples of its
-  // neighbors vote in n_rot randomly rotated accumulators, and the normals
-  // of their most voted bins are combined (`internal::estimate_normal()`).
-  // Points are processed along the Hilbert curve, each with the random
-  // stream of its id.
-  auto process = [&](std::size_t begin, std::size_t end, RRHT::internal::Scratch& scratch) {
-    for(std::size_t i = begin; i < end; ++i)
-    {
-      const bool written = estimated(i);
-      if(!written && !refit)
-        continue;
-      const RRHT::internal::Estimated_normal e =
-        RRHT::internal::estimate_normal(i, search, settings, scratch, adaptive ? &stages : nullptr);
-      const auto element = elements.at(points.begin(), search.input_index(i));
-      if(written)
-      {
-        put(normal_map, *element, Vector_3(FT(e.normal.x()), FT(e.normal.y()), FT(e.normal.z())));
-        put(confidence_map, *element, e.confidence);
-      }
-      if(!refit)
-        put(support_radius_map, *element, support_of(scratch.neighborhood));
-      else if(with_supports)
-        radii[i] = support_of(scratch.neighborhood);
-      if(refit)
-      {
-        rrht_normals[i] = e.normal;
-        noise[i] = e.normal == Eigen::Vector3d::Zero()
-                     ? std::numeric_limits<double>::infinity()
-                     : RRHT::internal::fit_one_sheet(scratch.neighborhood.points, scratch.neighborhood.radius, e.normal,
-                                                     -1, scratch.refit).noise;
-      }
-    }
-  };
-
-  // Beyond the paper: the least-squares refit of each RRHT normal, with the
-  // noise deviation of its cleanest neighbors (`internal::refit_normal()`).
-  auto refit_normals = [&](std::size_t begin, std::size_t end, RRHT::internal::Scratch& scratch) {
-    for(std::size_t i = begin; i < end; ++i)
-    {
-      if(!estimated(i))
-        continue;
-      const auto element = elements.at(points.begin(), search.input_index(i));
-      if(rrht_normals[i] == Eigen::Vector3d::Zero())
-      {
-        if(with_supports)
-          put(support_radius_map, *element, radii[i]);
-        continue;
-      }
-      RRHT::internal::Neighborhood& neighborhood = scratch.neighborhood;
-      search.find(i, settings.k, settings.neighbor_radius, neighborhood, scratch.search);
-      if(with_supports)
-        put(support_radius_map, *element, RRHT::internal::support_radius(neighborhood, radii));
-      const double deviation = RRHT::internal::noise_of_neighbors(neighborhood.positions, noise, scratch.refit.work);
-      if(!std::isfinite(deviation))
-        continue;
-      const Eigen::Vector3d refitted = RRHT::internal::refit_normal(neighborhood.points, neighborhood.radius,
-                                                                    rrht_normals[i], deviation, scratch.refit);
-      if(refitted != Eigen::Vector3d::Zero())
-        put(normal_map, *element, Vector_3(FT(refitted.x()), FT(refitted.y()), FT(refitted.z())));
-    }
-  };
-
-  RRHT::internal::Progress progress(callback, refit ? 2 * size : size);
-  RRHT::internal::for_each_block<ConcurrencyTag>(size, progress, make_scratch, process);
-  if(refit)
-    RRHT::internal::for_each_block<ConcurrencyTag>(size, progress, make_scratch, refit_normals);
+  // Section 2 at every point, and the least-squares refit if asked.
+  RRHT::internal::Progress progress(callback, checked.refit ? 2 * size : size);
+  RRHT::internal::hough_transform_passes<ConcurrencyTag>(context, adaptive, checked.refit, with_supports, progress);
   progress.finish();
 }
 

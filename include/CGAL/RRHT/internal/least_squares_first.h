@@ -13,6 +13,7 @@
 #define CGAL_RRHT_INTERNAL_LEAST_SQUARES_FIRST_H
 
 #include <CGAL/RRHT/internal/Neighbor_search.h>
+#include <CGAL/RRHT/internal/Pass_context.h>
 #include <CGAL/RRHT/internal/Progress.h>
 #include <CGAL/RRHT/internal/Scratch.h>
 #include <CGAL/RRHT/internal/Settings.h>
@@ -311,9 +312,9 @@ struct Least_squares_first_options
   bool supports;                 // compute the support radii
 };
 
-/// Estimates the normals of the points of `search` at the positions where
-/// `estimated(position)`, least squares first, in three passes over the
-/// cloud, and calls `write(position, normal, confidence, support)` for each:
+/// Estimates the normals of the points of the context's search that it
+/// estimates, least squares first, in three passes over the cloud, and
+/// writes each normal, confidence and support to the context's output:
 /// 1. at every point, the quadric of its neighborhood (`fit_quadric()`),
 ///    or of its side of a thin part (`fit_point_side()`), whose neighbors
 ///    are kept;
@@ -330,13 +331,18 @@ struct Least_squares_first_options
 /// The confidence of a quadric's normal is measured on the votes of the
 /// Hough transform's first stage at the point (`confidence()`). The support
 /// is the ball that holds the neighborhoods of the point's neighbors'
-/// neighbors, whose tests decide; `support_of(neighborhood)` is the radius
-/// of the support of a neighborhood alone.
-template <typename ConcurrencyTag, typename MakeScratch, typename Estimated, typename SupportOf, typename Write>
-void least_squares_first(const Neighbor_search& search, const Settings& settings,
-                         const Least_squares_first_options& options, Progress& progress, MakeScratch make_scratch,
-                         Estimated estimated, SupportOf support_of, Write write)
+/// neighbors, whose tests decide.
+template <typename ConcurrencyTag>
+void least_squares_first(const Pass_context& context, const Least_squares_first_options& options, Progress& progress)
 {
+  const Neighbor_search& search = context.search;
+  const Settings& settings = context.settings;
+  auto make_scratch = [&context]() { return context.make_scratch(); };
+  auto write = [&context](std::size_t i, const Eigen::Vector3d& normal, double confidence, double support) {
+    context.output.normal(i, normal);
+    context.output.confidence(i, confidence);
+    context.output.support(i, support);
+  };
   const std::size_t size = search.size();
   Neighbor_lists neighbors(size);
   std::vector<Eigen::Vector3d> normals(size);
@@ -349,7 +355,7 @@ void least_squares_first(const Neighbor_search& search, const Settings& settings
       neighbors[i].assign(neighborhood.positions.begin(), neighborhood.positions.end());
       radii[i] = neighborhood.radius;
       if(options.supports)
-        extents[i] = support_of(neighborhood);
+        extents[i] = context.support_of(neighborhood);
       const Quadric_fit fit = fit_point_side(
         neighborhood.points, neighborhood.radius, fit_quadric(neighborhood.points, neighborhood.radius, scratch.refit),
         scratch.refit);
@@ -393,7 +399,7 @@ void least_squares_first(const Neighbor_search& search, const Settings& settings
     Neighborhood& neighborhood = scratch.neighborhood;
     for(std::size_t i = begin; i < end; ++i)
     {
-      if(!estimated(i))
+      if(!context.estimated(i))
         continue;
       double support = 0;
       if(options.supports)
