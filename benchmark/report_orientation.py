@@ -3,12 +3,11 @@
 """The orientation experiment's part of benchmark/report.py: rrht_orient_normals
 against mst_orient_normals (and Open3D), its tables and its plot."""
 
-import csv
 import os
 from collections import OrderedDict, defaultdict
 
 from report_plots import plt, save
-from report_tables import fmt_time
+from report_tables import fmt_time, read_optional
 
 ORIENTATION_TARGETS = ("Targets: closed shapes ≥ 99.9% outward (≤ 0.1% against the outward normal, within 60°); "
                        "open shapes ≥ 99% consistent (≤ 1% on the minority side); the orientation's time ≤ the "
@@ -42,30 +41,22 @@ def orientation_floors(out, kind, target):
     """The sentences of orientation_floor.csv on the clouds of `kind`: the
     share of the points nearer the other side of a thin part than their own,
     a floor for the share of wrong orientations, against the `target`."""
-    path = os.path.join(out, "orientation_floor.csv")
-    if not os.path.exists(path):
-        return []
     md = []
-    with open(path, newline="") as f:
-        for r in csv.DictReader(f):
-            if r.get("kind", "closed") != kind:
-                continue
-            floor = float(r["floor_percent"])
-            md.append("\nThe floor on %s with %s%% noise: %.3f%% of its points lie nearer the other side of a thin "
-                      "part than their own; no orientation from the points alone can tell their side%s.\n"
-                      % (r["cloud"], r["noise_percent"], floor,
-                         ", and the target of %g is out of reach there" % target if floor > target else ""))
+    for r in read_optional(out, "orientation_floor.csv"):
+        if r.get("kind", "closed") != kind:
+            continue
+        floor = float(r["floor_percent"])
+        md.append("\nThe floor on %s with %s%% noise: %.3f%% of its points lie nearer the other side of a thin "
+                  "part than their own; no orientation from the points alone can tell their side%s.\n"
+                  % (r["cloud"], r["noise_percent"], floor,
+                     ", and the target of %g is out of reach there" % target if floor > target else ""))
     return md
 
 
 def orientation_report(rows, out):
     """orientation.md: the quality tables of orientation_quality.csv, the time
     against the number of points of orientation.csv (plot), and the targets."""
-    path = os.path.join(out, "orientation_quality.csv")
-    quality = []
-    if os.path.exists(path):
-        with open(path, newline="") as f:
-            quality = list(csv.DictReader(f))
+    quality = read_optional(out, "orientation_quality.csv")
     pipelines = list(OrderedDict((r["pipeline"], 0) for r in quality))
     md = [ORIENTATION_TARGETS + "\n"]
     closed = [r for r in quality if r["kind"] == "closed"]
@@ -161,10 +152,8 @@ def orientation_report(rows, out):
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize=7)
         images.append(save(fig, os.path.join(out, "orientation_time.png")))
-    path = os.path.join(out, "orientation_targets.csv")
-    if os.path.exists(path):
-        with open(path, newline="") as f:
-            targets = list(csv.DictReader(f))
+    targets = read_optional(out, "orientation_targets.csv")
+    if targets:
         md += ["\n### Time targets (median of the ratios round by round)\n", "| target | ratio | bound | met | rounds |",
                "|---|---|---|---|---|"]
         md += ["| %s | %.3f | %s | %s | %s |" % (r["target"], float(r["ratio"]), r["bound"], r["met"], r["rounds"])

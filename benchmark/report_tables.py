@@ -92,7 +92,8 @@ def table(rows, with_errors=True):
     return "\n".join(out) + "\n"
 
 
-def read_ratios(folder, file="speed_ratios.csv"):
+def read_optional(folder, file):
+    """The rows of a CSV file that an experiment may not have written, as strings; [] if it is absent."""
     path = os.path.join(folder, file)
     if not os.path.exists(path):
         return []
@@ -104,7 +105,7 @@ def targets_table(out, befores=(), file="speed_ratios.csv", column="ratio"):
     """The values rrht_benchmark printed for the targets, from `file` (whose
     values are in `column`), after those of the earlier results `befores` if
     given (columns named after the folders)."""
-    rows = read_ratios(out, file)
+    rows = read_optional(out, file)
     if not rows:
         return ""
     # The row of time against k names its slowest k, which differs from run
@@ -113,7 +114,7 @@ def targets_table(out, befores=(), file="speed_ratios.csv", column="ratio"):
         return re.sub(r" \(k = \d+\)", "", target)
 
     if befores:
-        olds = [{key(r["target"]): r for r in read_ratios(b, file)} for b in befores]
+        olds = [{key(r["target"]): r for r in read_optional(b, file)} for b in befores]
         names = [os.path.basename(os.path.normpath(d)) for d in list(befores) + [out]]
         lines = ["| target | bound | " + " | ".join("%s | met" % n for n in names) + " |",
                  "|---|---|" + "---|---|" * len(names)]
@@ -134,22 +135,19 @@ def targets_table(out, befores=(), file="speed_ratios.csv", column="ratio"):
 
 def adaptive_table(out):
     """The table of adaptive_errors.csv: errors over all points and near the edges."""
-    path = os.path.join(out, "adaptive_errors.csv")
-    if not os.path.exists(path):
+    rows = read_optional(out, "adaptive_errors.csv")
+    if not rows:
         return ""
-    with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
     lines = ["| data | estimator | time 2t (s) | > 10° (%) | RMS (°) | > 10° within 1% of an edge (%) |",
              "|---|---|---|---|---|---|"]
     for r in rows:
         lines.append("| %s | %s | %.3f | %.2f | %.2f | %.2f (of %.1f%% of the points) |" % (
             r["dataset"], r["estimator"], float(r["median_s"]), float(r["above10_percent"]), float(r["rms_deg"]),
             float(r["above10_near_edges_percent"]), float(r["near_edges_percent"])))
-    times = os.path.join(out, "adaptive_time.csv")
-    if os.path.exists(times):
-        with open(times, newline="") as f:
-            lines += ["", "| time, measured in rounds (median of the ratios round by round) | ratio | rounds |", "|---|---|---|"]
-            lines += ["| %s | %.3f | %s |" % (r["ratio"], float(r["value"]), r["rounds"]) for r in csv.DictReader(f)]
+    times = read_optional(out, "adaptive_time.csv")
+    if times:
+        lines += ["", "| time, measured in rounds (median of the ratios round by round) | ratio | rounds |", "|---|---|---|"]
+        lines += ["| %s | %.3f | %s |" % (r["ratio"], float(r["value"]), r["rounds"]) for r in times]
     return "\n".join(lines) + "\n"
 
 
@@ -175,11 +173,10 @@ def refit_table(rows):
 
 def confidence_table(out):
     """The table of confidence_auc.csv."""
-    path = os.path.join(out, "confidence_auc.csv")
-    if not os.path.exists(path):
+    rows = [{k: (v if k == "dataset" else float(v)) for k, v in r.items()}
+            for r in read_optional(out, "confidence_auc.csv")]
+    if not rows:
         return ""
-    with open(path, newline="") as f:
-        rows = [{k: (v if k == "dataset" else float(v)) for k, v in r.items()} for r in csv.DictReader(f)]
     lines = ["| data | points | > 10° (%) | AUC of 1 − confidence for > 10° | points within 1% of an edge (%) | "
              "median confidence there | median elsewhere | ratio | time with ÷ without the map |",
              "|---|---|---|---|---|---|---|---|---|"]
