@@ -20,8 +20,10 @@
 #     so, when ../shared/cgal is absent; RRHT_CGAL_VERSIONS=0 skips it).
 #  4. The reference documentation with Doxygen (scripts/build_docs.sh),
 #     which fails on any warning.
-# Every build fails on a compiler warning. The RRHT_* switches are for local
-# use: CI (.ci/run) runs every pass.
+# Every build fails on a compiler warning. The switches that skip a pass are
+# for local use: CI (.ci/run) runs every pass. RRHT_CCACHE=1 compiles through
+# ccache (Debian's package), so that a developer's fresh clone reuses the
+# objects of an earlier clone's run; CI's runs are cold.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 jobs=$(nproc)
@@ -106,6 +108,11 @@ extra_packages=(--python doxygen)
 [ "${RRHT_SANITIZE:-1}" != "0" ] && extra_packages+=(clang)
 bash "$root/scripts/install_dependencies.sh" "${extra_packages[@]}"
 [ -x "$python" ] || python=$(command -v python3)
+if [ "${RRHT_CCACHE:-0}" = "1" ]; then
+  command -v ccache > /dev/null || bash "$root/scripts/install_dependencies.sh" ccache
+  # Paths relative to the clone, so that another clone's objects match.
+  export CMAKE_CXX_COMPILER_LAUNCHER=ccache CCACHE_BASEDIR=$root CCACHE_NOHASHDIR=1
+fi
 
 begin_pass "1. gcc, Release, system CGAL: C++ suite and examples, the README's demo, the pip-installed package's pytest suite"
 configure "$reference" -DCMAKE_BUILD_TYPE=Release -DCGAL_RRHT_BUILD_BENCHMARKS=ON
