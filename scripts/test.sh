@@ -68,6 +68,13 @@ configure() { # build folder, extra cmake arguments...
 run_ctest() { # build folder, tests left out (a ctest regex, or "")
   (cd "$1" && ctest --output-on-failure -j"$jobs" ${2:+-E "$2"})
 }
+# pytest with this Python on the cgal_rrht it imports (named first) and the
+# rrht_normals of $CGAL_RRHT_CLI.
+run_pytest() { # python, test files or folders...
+  local python=$1; shift
+  (cd "$root/build" && "$python" -c "import cgal_rrht; print('testing', cgal_rrht.__file__)" &&
+     "$python" -m pytest -q -rs -p no:cacheprovider "$@")
+}
 
 # The same input and seed give the same normals, written exactly (17
 # digits), with the rrht_normals of build $1 as with pass 1's.
@@ -126,9 +133,7 @@ venv=$root/build/venv
 rm -rf "$venv"
 "$python" -m venv --system-site-packages "$venv"
 "$venv/bin/pip" install --no-build-isolation --no-index --quiet "$root"
-(cd "$root/build" && "$venv/bin/python" -c "import cgal_rrht; print('testing', cgal_rrht.__file__)" &&
-   CGAL_RRHT_CLI="$reference/examples/rrht_normals" \
-   "$venv/bin/python" -m pytest -q -rs -p no:cacheprovider "$root/python/tests")
+CGAL_RRHT_CLI="$reference/examples/rrht_normals" run_pytest "$venv/bin/python" "$root/python/tests"
 
 if [ "${RRHT_SANITIZE:-1}" != "0" ]; then
   begin_pass "2. clang with AddressSanitizer and UndefinedBehaviorSanitizer: C++ suite and examples, the same normals"
@@ -167,10 +172,8 @@ else
     # rrht_interface_tests compiles every public header on its own.
     cmake --build "$build" -j"$jobs" --target rrht_interface_tests rrht_normals cgal_rrht_core
     "$build/test/rrht_interface_tests" --warn NoTests
-    (cd "$root/build" && export PYTHONPATH="$build/python" CGAL_RRHT_CLI="$build/examples/rrht_normals" &&
-       "$python" -c "import cgal_rrht; print('testing', cgal_rrht.__file__)" &&
-       "$python" -m pytest -q -rs -p no:cacheprovider "$root/python/tests/test_cli_identity.py" \
-       "$root/python/tests/test_orient.py")
+    PYTHONPATH="$build/python" CGAL_RRHT_CLI="$build/examples/rrht_normals" \
+      run_pytest "$python" "$root/python/tests/test_cli_identity.py" "$root/python/tests/test_orient.py"
     same_normals "$build"
   done
 fi
