@@ -12,12 +12,8 @@
 #include "datasets.h"
 #include "estimators.h"
 #include "measure.h"
+#include "orientation_scores.h"
 
-#include <CGAL/Orthogonal_k_neighbor_search.h>
-#include <CGAL/Search_traits_3.h>
-#include <CGAL/Search_traits_adapter.h>
-#include <CGAL/property_map.h>
-#include <boost/iterator/counting_iterator.hpp>
 #include <boost/program_options.hpp>
 
 #include <algorithm>
@@ -427,41 +423,6 @@ bool read_per_point(const std::string& path, std::size_t size, std::vector<doubl
   }
   return errors.size() == size;
 }
-
-/// The nearest samples of a cloud to a point, by their index in the cloud.
-/// Sequential: the parent never starts TBB (measure.h forks it).
-class Nearest_samples
-{
-  typedef CGAL::Pointer_property_map<Point>::type Point_map;
-  typedef CGAL::Search_traits_adapter<std::size_t, Point_map, CGAL::Search_traits_3<Kernel> > Traits;
-
-public:
-  typedef CGAL::Orthogonal_k_neighbor_search<Traits> Knn;
-
-  explicit Nearest_samples(const Cloud& cloud)
-    : m_points(points_of(cloud)), m_map(CGAL::make_property_map(m_points)),
-      m_tree(boost::counting_iterator<std::size_t>(0), boost::counting_iterator<std::size_t>(m_points.size()),
-             Knn::Tree::Splitter(), Traits(m_map)),
-      m_distance(m_map)
-  {}
-
-  /// The `k` samples nearest to `q`, nearest first (`first`: the index).
-  Knn nearest(const Point& q, unsigned int k) const { return Knn(m_tree, q, k, 0, true, m_distance); }
-
-private:
-  static std::vector<Point> points_of(const Cloud& cloud)
-  {
-    std::vector<Point> points;
-    for(const Sample& s : cloud)
-      points.push_back(s.point);
-    return points;
-  }
-
-  std::vector<Point> m_points;
-  Point_map m_map;
-  Knn::Tree m_tree;
-  Knn::Distance m_distance;
-};
 
 } // namespace
 

@@ -49,6 +49,8 @@
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_traits.h>
@@ -90,6 +92,8 @@ typedef CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_face_graph_triangle_prim
 typedef std::vector<Segment>::const_iterator Segment_iterator;
 typedef CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_segment_primitive<K, Segment_iterator> > > Segment_tree;
 typedef CGAL::Poisson_reconstruction_function<K> Poisson_function;
+typedef CGAL::Exact_predicates_exact_constructions_kernel E; // the corefinements'
+typedef CGAL::Surface_mesh<E::Point_3> Exact_mesh;
 
 const double sharp_angle = 30;     // degrees between the normals of two faces: a sharp edge
 const double near_edge = 0.01;     // near a sharp edge: within 1% of the diagonal of it
@@ -129,8 +133,6 @@ bool make_truth(Mesh mesh, Truth& truth)
 /// union of its boxes (exact corefinement, then rounded).
 Mesh finned_part_mesh()
 {
-  typedef CGAL::Exact_predicates_exact_constructions_kernel E;
-  typedef CGAL::Surface_mesh<E::Point_3> Exact_mesh;
   const auto box = [](double x0, double y0, double z0, double x1, double y1, double z1) {
     Exact_mesh m;
     CGAL::make_hexahedron(E::Point_3(x0, y0, z0), E::Point_3(x1, y0, z0), E::Point_3(x1, y1, z0),
@@ -155,6 +157,177 @@ Mesh finned_part_mesh()
   Mesh mesh;
   CGAL::copy_face_graph(part, mesh);
   return mesh;
+}
+
+/// How far the true meshes of the machined parts and the closed blade may
+/// stray from their curved surfaces (cylinders as inscribed polygons, the
+/// blade's parabolas as polylines), in parts of the diagonal; their samples
+/// must lie within twice that of the mesh (the other true meshes are exact:
+/// 1e-9).
+const double chord_error = 0.5e-5;
+
+/// `value` rounded to a multiple of 2^-40 (about 1e-12): the coordinates of
+/// the prisms are computed in double as test/shapes.h computes them, where
+/// -0.84 + 0.04 is not -0.8; rounded, faces meant to be coplanar (a flange
+/// and a shaft's end) are, and the corefinement makes no sliver between them.
+double snapped(double value)
+{
+  const double grid = std::ldexp(1., 40);
+  return std::round(value * grid) / grid;
+}
+
+/// A prism of test/shapes.h (`rrht_test::Prism`) as a closed triangle mesh,
+/// outward: its convex polygon as it is, its disk as the inscribed regular
+/// polygon with the fewest sides whose chord error, radius (1 - cos(pi /
+/// sides)), is at most `max_error`.
+Exact_mesh prism_mesh(const rrht_test::Prism& prism, double max_error)
+{
+  std::vector<std::pair<double, double> > polygon = prism.polygon;
+  const bool disk = polygon.empty();
+  if(disk)
+  {
+    const double half_angle = std::acos((std::max)(-1., 1 - max_error / prism.radius));
+    const std::size_t sides = (std::max)(std::size_t(16), std::size_t(std::ceil(CGAL_PI / half_angle)));
+    for(std::size_t i = 0; i < sides; ++i)
+      polygon.emplace_back(prism.radius * std::cos(2 * CGAL_PI * double(i) / double(sides)),
+                           prism.radius * std::sin(2 * CGAL_PI * double(i) / double(sides)));
+  }
+  const auto point = [&](double a, double b, double c) { // as rrht_test::solid_boundary() places a sample
+    const rrht_test::Point p = prism.origin + a * prism.u + b * prism.v + c * prism.w();
+    return E::Point_3(snapped(p.x()), snapped(p.y()), snapped(p.z()));
+  };
+  Exact_mesh m;
+  const std::size_t n = polygon.size();
+  std::vector<Exact_mesh::Vertex_index> bottom, top;
+  for(const auto& q : polygon)
+  {
+    bottom.push_back(m.add_vertex(point(q.first, q.second, prism.bottom)));
+    top.push_back(m.add_vertex(point(q.first, q.second, prism.top)));
+  }
+  std::vector<Exact_mesh::Face_index> added;
+  // The caps: a fan about the polygon's first vertex. (With a fan about a
+  // disk's centre, the union of the spool's coaxial cylinders, whose caps are
+  // coplanar and whose fans' edges overlap along the same lines, ran for over
+  // 15 minutes.)
+  for(std::size_t i = 1; i + 1 < n; ++i)
+  {
+    added.push_back(m.add_face(top[0], top[i], top[i + 1]));
+    added.push_back(m.add_face(bottom[0], bottom[i + 1], bottom[i]));
+  }
+  for(std::size_t i = 0; i < n; ++i) // counterclockwise in (u, v): out is to the right of each side
+  {
+    const std::size_t j = (i + 1) % n;
+    added.push_back(m.add_face(bottom[i], bottom[j], top[j]));
+    added.push_back(m.add_face(bottom[i], top[j], top[i]));
+  }
+  if(std::count(added.begin(), added.end(), Exact_mesh::null_face()) > 0 || !CGAL::is_closed(m))
+    throw std::runtime_error("a prism's mesh is not closed");
+  if(!PMP::is_outward_oriented(m))
+    PMP::reverse_face_orientations(m);
+  return m;
+}
+
+/// The boundary of a solid of test/shapes.h (`rrht_test::Solid`) as a closed
+/// mesh: the union of its added prisms less the union of its removed ones
+/// (exact corefinement, then rounded), the disks as polygons whose chord
+/// error is at most `max_error`.
+Mesh solid_mesh(const rrht_test::Solid& solid, double max_error)
+{
+  if(solid.added.empty())
+    throw std::runtime_error("a solid with no prism");
+  Exact_mesh part = prism_mesh(solid.added.front(), max_error);
+  for(std::size_t i = 1; i < solid.added.size(); ++i)
+  {
+    Exact_mesh prism = prism_mesh(solid.added[i], max_error);
+    if(!PMP::corefine_and_compute_union(part, prism, part))
+      throw std::runtime_error("the union of a solid's prisms failed");
+  }
+  for(const rrht_test::Prism& removed : solid.removed)
+  {
+    Exact_mesh prism = prism_mesh(removed, max_error);
+    if(!PMP::corefine_and_compute_difference(part, prism, part))
+      throw std::runtime_error("the difference of a solid's prisms failed");
+  }
+  Mesh mesh;
+  CGAL::copy_face_graph(part, mesh);
+  return mesh;
+}
+
+/// `rrht_test::closed_blade()` with thickness `t` as a closed mesh: each side,
+/// y = a (1 - x^2) for x in [-1,1], as the polyline through `sides` + 1
+/// points evenly spaced in x (its chord error a (2 / sides)^2 / 4) extruded
+/// along z in [-1,1], the two sides sharing their ends (x = -1 and 1), and
+/// the caps z = -1 and 1 between them.
+Mesh closed_blade_mesh(double t, std::size_t sides)
+{
+  const double high = rrht_test::closed_blade_camber + t / 2, low = rrht_test::closed_blade_camber - t / 2;
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t> > triangles;
+  // Vertex (side, i, end): side 0 low, 1 high; the ends i = 0 and `sides` are shared.
+  const auto vertex = [&](int side, std::size_t i, int end) {
+    const std::size_t shared = (i == 0 || i == sides) ? 0 : std::size_t(side);
+    return (2 * i + shared) * 2 + std::size_t(end);
+  };
+  for(std::size_t i = 0; i <= sides; ++i)
+    for(int side = 0; side < 2; ++side)
+      for(int end = 0; end < 2; ++end)
+      {
+        const double x = -1 + 2 * double(i) / double(sides), a = side ? high : low;
+        // Every slot is filled, the ends' second side with a copy that no triangle uses.
+        points.emplace_back(x, (i == 0 || i == sides) ? 0. : a * (1 - x * x), end ? 1. : -1.);
+      }
+  for(std::size_t i = 0; i < sides; ++i)
+  {
+    for(int side = 0; side < 2; ++side)
+    {
+      const std::size_t a0 = vertex(side, i, 0), a1 = vertex(side, i, 1), b0 = vertex(side, i + 1, 0),
+                        b1 = vertex(side, i + 1, 1);
+      triangles.push_back({ a0, b0, b1 });
+      triangles.push_back({ a0, b1, a1 });
+    }
+    for(int end = 0; end < 2; ++end)
+    {
+      const std::size_t l0 = vertex(0, i, end), l1 = vertex(0, i + 1, end), h0 = vertex(1, i, end),
+                        h1 = vertex(1, i + 1, end);
+      if(l0 != h0)
+        triangles.push_back({ l0, l1, h0 });
+      if(l1 != h1)
+        triangles.push_back({ h0, l1, h1 });
+    }
+  }
+  // Drop the unused copies, then orient the soup consistently, and outward.
+  std::vector<std::size_t> index(points.size(), std::size_t(-1));
+  std::vector<Point> used;
+  for(auto& triangle : triangles)
+    for(std::size_t& v : triangle)
+    {
+      if(index[v] == std::size_t(-1))
+      {
+        index[v] = used.size();
+        used.push_back(points[v]);
+      }
+      v = index[v];
+    }
+  if(!PMP::orient_polygon_soup(used, triangles))
+    throw std::runtime_error("the closed blade's triangles cannot be oriented consistently");
+  Mesh mesh;
+  PMP::polygon_soup_to_polygon_mesh(used, triangles, mesh);
+  if(!CGAL::is_closed(mesh))
+    throw std::runtime_error("the closed blade's mesh is not closed");
+  if(!PMP::is_outward_oriented(mesh))
+    PMP::reverse_face_orientations(mesh);
+  return mesh;
+}
+
+/// The thickness of the closed blade (at its middle), as in the orientation experiment.
+const double closed_blade_thickness = 0.04;
+
+/// The polyline's segments for a chord error of at most `max_error` on the
+/// closed blade's more curved side, y = a (1 - x^2): a (2 / sides)^2 / 4.
+std::size_t closed_blade_sides(double max_error)
+{
+  const double a = rrht_test::closed_blade_camber + closed_blade_thickness / 2;
+  return (std::max)(std::size_t(16), std::size_t(std::ceil(2 * std::sqrt(a / (4 * max_error)))));
 }
 
 /// One normal set fed to Poisson.
@@ -354,6 +527,13 @@ double flipped_percent(const std::vector<Point_with_normal>& oriented, const rrh
   return scored == 0 ? 0 : 100. * flipped / scored;
 }
 
+std::string fixed(double value, int digits)
+{
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(digits) << value;
+  return s.str();
+}
+
 struct Shape
 {
   std::string name;
@@ -361,8 +541,12 @@ struct Shape
   Truth truth;
 };
 
-/// The shapes: meshes of ../shared/data sampled (face normal as truth) and
-/// the finned part. A mesh absent is skipped, with a message.
+/// The shapes: meshes of ../shared/data sampled (face normal as truth), the
+/// finned part, the machined parts (slotted disk, spool, drilled block, gear)
+/// and the closed blade of test/shapes.h. A mesh absent is skipped, with a
+/// message. The samples must lie on the true mesh: exactly on the exact
+/// meshes, within twice `chord_error` of the diagonal on those with curved
+/// faces.
 std::vector<Shape> shapes(const std::string& data, const std::vector<std::string>& names, std::size_t n)
 {
   std::vector<Shape> result;
@@ -371,10 +555,32 @@ std::vector<Shape> shapes(const std::string& data, const std::vector<std::string
     Shape s;
     s.name = name;
     Mesh mesh;
+    double tolerance = 1e-9; // of the diagonal: how far a sample may lie from the true mesh
     if(name == "finned")
     {
       mesh = finned_part_mesh();
       s.cloud = rrht_test::finned_part(n, 7);
+    }
+    else if(name == "slotted_disk" || name == "spool" || name == "drilled_block" || name == "gear" ||
+            name == "closed_blade")
+    {
+      s.cloud = name == "slotted_disk"    ? rrht_test::slotted_disk(n, 7)
+                : name == "spool"         ? rrht_test::spool(n, 7)
+                : name == "drilled_block" ? rrht_test::drilled_block(n, 7)
+                : name == "gear"          ? rrht_test::spur_gear(n, 7)
+                                          : rrht_test::closed_blade(n, closed_blade_thickness, 7);
+      // The diagonal of the cloud, a little under the mesh's, bounds the chord error.
+      const double max_error = chord_error * rrht_test::bounding_box_diagonal(s.cloud);
+      CGAL::Real_timer timer;
+      timer.start();
+      mesh = name == "slotted_disk"    ? solid_mesh(rrht_test::slotted_disk_solid(), max_error)
+             : name == "spool"         ? solid_mesh(rrht_test::spool_solid(), max_error)
+             : name == "drilled_block" ? solid_mesh(rrht_test::drilled_block_solid(), max_error)
+             : name == "gear"          ? solid_mesh(rrht_test::spur_gear_solid(), max_error)
+                                       : closed_blade_mesh(closed_blade_thickness, closed_blade_sides(max_error));
+      timer.stop();
+      std::cout << name << ": true mesh built in " << fixed(timer.time(), 1) << " s" << std::endl;
+      tolerance = 2 * chord_error;
     }
     else
     {
@@ -405,11 +611,14 @@ std::vector<Shape> shapes(const std::string& data, const std::vector<std::string
       const Vector normal = PMP::compute_face_normal(closest.second, s.truth.mesh);
       outward += normal.x() * t.truth.x() + normal.y() * t.truth.y() + normal.z() * t.truth.z() > 0;
     }
-    if(farthest > 1e-9 * s.truth.diagonal || outward < 0.999 * s.cloud.size())
-      throw std::runtime_error(name + ": the cloud is not on its true surface, or not outward");
+    if(farthest > tolerance * s.truth.diagonal || outward < 0.999 * s.cloud.size())
+      throw std::runtime_error(name + ": the cloud is not on its true surface, or not outward (farthest sample " +
+                               std::to_string(farthest / s.truth.diagonal) + " of the diagonal off, " +
+                               std::to_string(100 * outward / s.cloud.size()) + "% outward)");
     std::cout << name << ": " << s.cloud.size() << " points, true mesh of " << s.truth.mesh.number_of_faces()
               << " triangles and " << s.truth.sharp_edges.size() << " sharp edges (above " << sharp_angle
-              << " degrees)" << std::endl;
+              << " degrees); farthest sample " << farthest / s.truth.diagonal << " of the diagonal off it, "
+              << 100 * outward / s.cloud.size() << "% of the exact normals outward" << std::endl;
     result.push_back(std::move(s));
   }
   return result;
@@ -425,13 +634,6 @@ std::vector<std::string> split(const std::string& list)
   return items;
 }
 
-std::string fixed(double value, int digits)
-{
-  std::ostringstream s;
-  s << std::fixed << std::setprecision(digits) << value;
-  return s.str();
-}
-
 } // namespace
 
 int main(int argc, char** argv)
@@ -443,7 +645,8 @@ int main(int argc, char** argv)
     ("out", po::value<std::string>()->required(), "folder of poisson.csv and poisson.md")
     ("scratch", po::value<std::string>()->default_value(""), "folder of the surfaces (.off), if given")
     ("shapes", po::value<std::string>()->default_value("fandisk,anchor,cube,finned"),
-     "comma-separated: fandisk, anchor, cube (meshes of --data) and finned (test/shapes.h)")
+     "comma-separated: fandisk, anchor, cube (meshes of --data), finned, slotted_disk, spool, drilled_block, "
+     "gear and closed_blade (test/shapes.h)")
     ("points", po::value<std::size_t>()->default_value(100000), "points per cloud")
     ("noise", po::value<std::string>()->default_value("0,0.2"),
      "comma-separated noise levels, in % of the bounding-box diagonal")

@@ -12,6 +12,23 @@ from report_tables import fmt_time, read_optional
 ORIENTATION_TARGETS = ("Targets: closed shapes ≥ 99.9% outward (≤ 0.1% against the outward normal, within 60°); "
                        "open shapes ≥ 99% consistent (≤ 1% on the minority side); the orientation's time ≤ the "
                        "estimation's at 100k and 1M points.")
+# Since the closed rows have a floor and a largest inward patch (orientation_quality.csv's
+# floor_percent and largest_inward_patch columns).
+ORIENTATION_TARGETS_WITH_FLOOR = (
+    "Targets: closed shapes ≥ 99.9% outward where no thin part hides the side of the points: at most "
+    "max(0.1, floor + 0.1)% of the normals against the outward normal (within 60°), the floor being that of "
+    "the cloud's noise (0 when clean), and no connected patch of more than 50 inward normals; open shapes ≥ 99% "
+    "consistent (≤ 1% on the minority side); the orientation's time ≤ the estimation's at 100k and 1M points.")
+
+
+def number(r, column):
+    """The value of `column` in the row `r` as a float; None where the column is
+    absent (a CSV of an earlier run), empty or negative (n/a)."""
+    try:
+        value = float(r.get(column) or "")
+    except ValueError:
+        return None
+    return value if value >= 0 else None
 
 
 def orientation_cloud(r):
@@ -22,19 +39,41 @@ def orientation_cloud(r):
     return "%s, %s" % (r["dataset"], "%g%% noise" % noise if noise else "clean")
 
 
-def orientation_wide(rows, pipelines, value, title):
-    """A table with a row per cloud and a column per pipeline, `value(row)` in each cell."""
+def orientation_wide(rows, pipelines, value, title, lead=()):
+    """A table with a row per cloud and a column per pipeline, `value(row)` in each cell,
+    after the columns of `lead`, (header, cell(row)) pairs of the cloud's first row."""
     clouds = OrderedDict()
     for r in rows:
-        clouds.setdefault(orientation_cloud(r), {})[r["pipeline"]] = r
-    lines = ["\n%s\n" % title, "| cloud | " + " | ".join(pipelines) + " |", "|---|" + "---|" * len(pipelines)]
+        clouds.setdefault(orientation_cloud(r), OrderedDict())[r["pipeline"]] = r
+    headers = ["cloud"] + [h for h, _ in lead] + list(pipelines)
+    lines = ["\n%s\n" % title, "| " + " | ".join(headers) + " |", "|" + "---|" * len(headers)]
     for cloud, by_pipeline in clouds.items():
-        cells = []
+        first = next(iter(by_pipeline.values()))
+        cells = [cell(first) for _, cell in lead]
         for p in pipelines:
             r = by_pipeline.get(p)
             cells.append("not run" if r is None else (value(r) if r["status"] == "ok" else r["status"]))
         lines.append("| %s | %s |" % (cloud, " | ".join(cells)))
     return lines
+
+
+def floor_cell(floors):
+    """The floor of a closed row in %: its floor_percent, else (a CSV of an earlier
+    run) that of orientation_floor.csv at its cloud and noise, else n/a."""
+    def cell(r):
+        floor = number(r, "floor_percent")
+        if floor is None and not int(r["outliers"]):
+            floor = floors.get((r["dataset"], r["kind"], float(r["noise_percent"])))
+        return "n/a" if floor is None else "%.3f" % floor
+    return cell
+
+
+def target_cell(r):
+    """The target of a closed row: its bound on the share against the outward normal,
+    and on the largest inward patch where it has one."""
+    bound = number(r, "target_percent")
+    patch = number(r, "target_patch")
+    return ("n/a" if bound is None else "≤ %g%%" % bound) + ("" if patch is None else ", ≤ %d points" % patch)
 
 
 def orientation_floors(out, kind, target):
@@ -58,20 +97,37 @@ def orientation_report(rows, out):
     against the number of points of orientation.csv (plot), and the targets."""
     quality = read_optional(out, "orientation_quality.csv")
     pipelines = list(OrderedDict((r["pipeline"], 0) for r in quality))
-    md = [ORIENTATION_TARGETS + "\n"]
     closed = [r for r in quality if r["kind"] == "closed"]
+    with_floor = any("largest_inward_patch" in r for r in closed)
+    md = [(ORIENTATION_TARGETS_WITH_FLOOR if with_floor else ORIENTATION_TARGETS) + "\n"]
     if closed:
+        floors = {(r["cloud"], r.get("kind", "closed"), float(r["noise_percent"])): float(r["floor_percent"])
+                  for r in read_optional(out, "orientation_floor.csv")}
         md += orientation_wide(closed, pipelines,
                                lambda r: "%.3f (%.1f%%)" % (float(r["wrong_percent"]), float(r["counted_percent"])),
                                "### Closed shapes: % of the normals pointing against the exact outward normal, among "
                                "those within 60° of its line (in brackets: their share of the surface points). "
-                               "Target ≤ 0.1")
+                               "Floor: the share of the points nearer the other side of a thin part than their own "
+                               "(%); target: the row's",
+                               lead=[("floor %", floor_cell(floors)), ("target", target_cell)])
         md += orientation_wide(closed, pipelines, lambda r: "%.3f" % float(r["wrong_all_percent"]),
                                "### Closed shapes: the same over all surface points (a null normal counts as wrong)")
         md += orientation_wide(closed, pipelines, lambda r: "%.3f" % float(r["up_to_flip_percent"]),
                                "### Closed shapes: up to a global flip (the minority side, within 60°): 0 where the "
                                "normals are consistent, pointing out or all in")
-        md += orientation_floors(out, "closed", 0.1)
+        md += orientation_wide(closed, pipelines,
+                               lambda r: "n/a" if number(r, "largest_inward_patch") is None
+                               else "%d" % number(r, "largest_inward_patch"),
+                               "### Closed shapes: the largest connected patch of inward normals, in points (inward: "
+                               "within 60° of the exact normal's line and against it; two inward points are joined "
+                               "where one is among the other's 18 nearest neighbors). Target ≤ 50")
+        if with_floor:
+            md.append("\nThe floor of a noisy cloud is the share of its points that the noise carried nearer the "
+                      "other side of a thin part than their own (orientation_floor.csv): no orientation from the "
+                      "points alone can tell their side. A shape whose floor at 0.2% noise is above 0.1% also runs "
+                      "at 0.05% noise.\n")
+        else:
+            md += orientation_floors(out, "closed", 0.1)
         met = [r for r in closed if r["pipeline"] == pipelines[0] and r["met"] == "yes"]
         md.append("\n%s meets the target on %d of %d closed clouds.\n" % (
             pipelines[0], len(met), sum(1 for r in closed if r["pipeline"] == pipelines[0])))

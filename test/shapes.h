@@ -17,6 +17,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rrht_test {
@@ -250,6 +251,44 @@ inline Cloud hollow_box(std::size_t n, double w, unsigned int seed)
   });
 }
 
+/// `n` samples drawn uniformly over faces of areas `areas`: a face is
+/// picked with a probability proportional to its area, then
+/// `draw(face, rng, u, sample)` draws a point of it, uniformly, and says
+/// whether to keep it (a face that another covers is rejected, and the
+/// density stays uniform). On degenerate input (no area, or 10^6 draws in a
+/// row rejected) it stops and returns the samples it has, possibly fewer
+/// than `n`.
+template <typename Draw>
+Cloud sample_faces(const std::vector<double>& areas, std::size_t n, unsigned int seed, Draw draw)
+{
+  std::vector<double> cumulated_area;
+  double total = 0;
+  for(double area : areas)
+    cumulated_area.push_back(total += (area > 0 ? area : 0.));
+  Cloud cloud;
+  if(!(total > 0))
+    return cloud;
+  cloud.reserve(n);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  const std::size_t max_rejections = 1000000;
+  for(std::size_t rejections = 0; cloud.size() < n && rejections < max_rejections;)
+  {
+    // upper_bound never picks a face of zero area.
+    const std::size_t f = std::upper_bound(cumulated_area.begin(), cumulated_area.end(), u(rng) * total) -
+                          cumulated_area.begin();
+    Sample s;
+    if(!draw((std::min)(f, areas.size() - 1), rng, u, s))
+    {
+      ++rejections;
+      continue;
+    }
+    rejections = 0;
+    cloud.push_back(s);
+  }
+  return cloud;
+}
+
 /// An axis-aligned box [lo[0], hi[0]] x [lo[1], hi[1]] x [lo[2], hi[2]].
 struct Box
 {
@@ -269,35 +308,21 @@ inline Cloud box_union(const std::vector<Box>& boxes, std::size_t n, unsigned in
 {
   struct Face { std::size_t box; int axis; bool high; };
   std::vector<Face> faces;
-  std::vector<double> cumulated_area;
-  double total = 0;
+  std::vector<double> areas;
   for(std::size_t b = 0; b < boxes.size(); ++b)
     for(int axis = 0; axis < 3; ++axis)
     {
       const int i = (axis + 1) % 3, j = (axis + 2) % 3;
       const double area = (boxes[b].hi[i] - boxes[b].lo[i]) * (boxes[b].hi[j] - boxes[b].lo[j]);
-      if(!(area > 0))
-        continue;
       for(int high = 0; high < 2; ++high)
       {
-        total += area;
         faces.push_back(Face{ b, axis, high == 1 });
-        cumulated_area.push_back(total);
+        areas.push_back(area);
       }
     }
-  Cloud cloud;
-  if(!(total > 0))
-    return cloud;
-  cloud.reserve(n);
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(0, 1);
-  const std::size_t max_rejections = 1000000;
-  for(std::size_t rejections = 0; cloud.size() < n && rejections < max_rejections;)
-  {
-    // upper_bound never picks a face of zero area.
-    const std::size_t f = std::upper_bound(cumulated_area.begin(), cumulated_area.end(), u(rng) * total) -
-                          cumulated_area.begin();
-    const Face& face = faces[(std::min)(f, faces.size() - 1)];
+  return sample_faces(areas, n, seed, [&](std::size_t f, std::mt19937& rng, std::uniform_real_distribution<double>& u,
+                                          Sample& s) {
+    const Face& face = faces[f];
     const Box& box = boxes[face.box];
     double p[3], q[3];
     for(int d = 0; d < 3; ++d)
@@ -306,24 +331,16 @@ inline Cloud box_union(const std::vector<Box>& boxes, std::size_t n, unsigned in
     const double epsilon = 1e-9 * (std::max)(1., std::abs(p[face.axis]));
     std::copy(p, p + 3, q);
     q[face.axis] += face.high ? epsilon : -epsilon;
-    bool covered = false;
-    for(std::size_t b = 0; b < boxes.size() && !covered; ++b)
-      covered = boxes[b].lo[0] <= q[0] && q[0] <= boxes[b].hi[0] && boxes[b].lo[1] <= q[1] &&
-                q[1] <= boxes[b].hi[1] && boxes[b].lo[2] <= q[2] && q[2] <= boxes[b].hi[2];
-    if(covered)
-    {
-      ++rejections;
-      continue;
-    }
-    rejections = 0;
+    for(const Box& other : boxes)
+      if(other.lo[0] <= q[0] && q[0] <= other.hi[0] && other.lo[1] <= q[1] && q[1] <= other.hi[1] &&
+         other.lo[2] <= q[2] && q[2] <= other.hi[2])
+        return false;
     double t[3] = { 0, 0, 0 };
     t[face.axis] = face.high ? 1. : -1.;
-    Sample s;
     s.point = Point(p[0], p[1], p[2]);
     s.truth = Vector(t[0], t[1], t[2]);
-    cloud.push_back(s);
-  }
-  return cloud;
+    return true;
+  });
 }
 
 /// A finned part, uniformly over its area with the outward normal: the base
@@ -368,6 +385,315 @@ inline Cloud thin_blade(std::size_t n, double t, unsigned int seed)
     // dS/du x dS/dz = (R(k z) (b cos u, sin u), k (b^2 - 1) sin u cos u): outward, as at u = 0 it is +x.
     const Vector normal(cr * b * ca - sr * sa, sr * b * ca + cr * sa, k * (b * b - 1) * sa * ca);
     s.truth = normal / std::sqrt(normal.squared_length());
+  });
+}
+
+/// A right prism: a convex polygon, or a disk, of the plane spanned by the
+/// orthonormal vectors `u` and `v` at `origin`, swept along u x v from
+/// `bottom` to `top`; a block, a gear's tooth, a shaft, a bore.
+struct Prism
+{
+  Point origin;
+  Vector u, v;
+  double bottom, top;
+  std::vector<std::pair<double, double> > polygon; // counterclockwise in (u, v); empty for the disk
+  double radius;                                     // of the disk
+
+  Vector w() const { return CGAL::cross_product(u, v); }
+
+  /// Whether `p` is in the prism, its boundary and a margin of `tolerance`
+  /// included.
+  bool contains(const Point& p, double tolerance = 0) const
+  {
+    const Vector d = p - origin;
+    const double c = d * w();
+    return bottom - tolerance <= c && c <= top + tolerance && in_section(d * u, d * v, tolerance);
+  }
+
+  /// Whether (`a`, `b`) is in the polygon or the disk, its boundary and a
+  /// margin of `tolerance` included.
+  bool in_section(double a, double b, double tolerance = 0) const
+  {
+    if(polygon.empty())
+      return a * a + b * b <= (radius + tolerance) * (radius + tolerance);
+    for(std::size_t i = 0; i < polygon.size(); ++i)
+    {
+      const auto& p0 = polygon[i];
+      const auto& p1 = polygon[(i + 1) % polygon.size()];
+      const double ex = p1.first - p0.first, ey = p1.second - p0.second;
+      if(ex * (b - p0.second) - ey * (a - p0.first) < -tolerance * std::sqrt(ex * ex + ey * ey))
+        return false;
+    }
+    return true;
+  }
+};
+
+/// The box [lo, hi], axis-aligned, as a prism.
+inline Prism box_prism(const Point& lo, const Point& hi)
+{
+  return Prism{ CGAL::ORIGIN, Vector(1, 0, 0), Vector(0, 1, 0), lo.z(), hi.z(),
+                { { lo.x(), lo.y() }, { hi.x(), lo.y() }, { hi.x(), hi.y() }, { lo.x(), hi.y() } }, 0 };
+}
+
+/// The cylinder of `radius` whose axis runs from `base` along the unit `axis`
+/// for `length`.
+inline Prism cylinder_prism(const Point& base, const Vector& axis, double radius, double length)
+{
+  // Any unit u perpendicular to the axis.
+  const Vector helper = std::abs(axis.x()) < 0.9 ? Vector(1, 0, 0) : Vector(0, 1, 0);
+  Vector u = CGAL::cross_product(helper, axis);
+  u = u / std::sqrt(u.squared_length());
+  const Vector v = CGAL::cross_product(axis, u);
+  return Prism{ base, u, v, 0, length, {}, radius };
+}
+
+/// The prism over the convex `polygon` (counterclockwise) of the plane xy,
+/// turned by `angle` about the z axis, from z = `bottom` to `top`.
+inline Prism turned_prism(const std::vector<std::pair<double, double> >& polygon, double angle, double bottom,
+                          double top)
+{
+  return Prism{ CGAL::ORIGIN, Vector(std::cos(angle), std::sin(angle), 0), Vector(-std::sin(angle), std::cos(angle), 0),
+                bottom, top, polygon, 0 };
+}
+
+/// A solid made of prisms: the union of the `added` ones, less the union of
+/// the `removed` ones (holes, slots, grooves).
+struct Solid
+{
+  std::vector<Prism> added, removed;
+
+  bool contains(const Point& p) const
+  {
+    auto in = [&](const Prism& prism) { return prism.contains(p); };
+    return std::any_of(added.begin(), added.end(), in) && std::none_of(removed.begin(), removed.end(), in);
+  }
+};
+
+/// `n` points drawn uniformly over the boundary of `solid`, with the normal
+/// out of it as truth. A face of a prism (a cap, a side of the polygon, the
+/// disk's side) is picked with a probability proportional to its area and a
+/// point uniformly on it; the point is kept if it is on the boundary of the
+/// solid (moved by a tiny epsilon against its normal, in; along it, out) and
+/// on no face of an earlier prism of the same list (where two caps
+/// coincide, the first samples them). The density stays uniform. On
+/// degenerate input (no area, or 10^6 draws in a row rejected) it stops and
+/// returns the points it has, possibly fewer than `n`.
+inline Cloud solid_boundary(const Solid& solid, std::size_t n, unsigned int seed)
+{
+  struct Face { bool removed; std::size_t prism; int side; }; // side: -2 bottom, -1 top, else an edge
+  std::vector<Face> faces;
+  std::vector<double> face_areas;
+  for(int removed = 0; removed < 2; ++removed)
+  {
+    const std::vector<Prism>& prisms = removed ? solid.removed : solid.added;
+    for(std::size_t i = 0; i < prisms.size(); ++i)
+    {
+      const Prism& p = prisms[i];
+      double cap = pi * p.radius * p.radius;
+      std::vector<double> sides(1, 2 * pi * p.radius * (p.top - p.bottom));
+      if(!p.polygon.empty())
+      {
+        cap = 0;
+        sides.clear();
+        for(std::size_t e = 0; e < p.polygon.size(); ++e)
+        {
+          const auto& a = p.polygon[e];
+          const auto& b = p.polygon[(e + 1) % p.polygon.size()];
+          cap += (a.first * b.second - b.first * a.second) / 2;
+          sides.push_back(std::hypot(b.first - a.first, b.second - a.second) * (p.top - p.bottom));
+        }
+      }
+      std::vector<double> areas = { cap, cap };
+      areas.insert(areas.end(), sides.begin(), sides.end());
+      for(std::size_t f = 0; f < areas.size(); ++f)
+      {
+        faces.push_back(Face{ removed == 1, i, int(f) - 2 });
+        face_areas.push_back(areas[f]);
+      }
+    }
+  }
+  return sample_faces(face_areas, n, seed, [&](std::size_t f, std::mt19937& rng,
+                                               std::uniform_real_distribution<double>& u, Sample& s) {
+    const Face& face = faces[f];
+    const std::vector<Prism>& prisms = face.removed ? solid.removed : solid.added;
+    const Prism& prism = prisms[face.prism];
+    double a = 0, b = 0, c = 0, na = 0, nb = 0, nc = 0; // the point and the normal out of the prism, in (u, v, w)
+    if(face.side < 0)
+    {
+      c = face.side == -1 ? prism.top : prism.bottom;
+      nc = face.side == -1 ? 1 : -1;
+      // Uniformly in the polygon or the disk, by rejection from its bounding box.
+      double lo[2] = { -prism.radius, -prism.radius }, hi[2] = { prism.radius, prism.radius };
+      for(std::size_t e = 0; e < prism.polygon.size(); ++e)
+      {
+        const auto& q = prism.polygon[e];
+        lo[0] = e ? (std::min)(lo[0], q.first) : q.first;
+        hi[0] = e ? (std::max)(hi[0], q.first) : q.first;
+        lo[1] = e ? (std::min)(lo[1], q.second) : q.second;
+        hi[1] = e ? (std::max)(hi[1], q.second) : q.second;
+      }
+      do
+      {
+        a = lo[0] + u(rng) * (hi[0] - lo[0]);
+        b = lo[1] + u(rng) * (hi[1] - lo[1]);
+      } while(!prism.in_section(a, b));
+    }
+    else
+    {
+      c = prism.bottom + u(rng) * (prism.top - prism.bottom);
+      const double t = u(rng);
+      if(prism.polygon.empty())
+      {
+        na = std::cos(2 * pi * t);
+        nb = std::sin(2 * pi * t);
+        a = prism.radius * na;
+        b = prism.radius * nb;
+      }
+      else
+      {
+        const auto& p0 = prism.polygon[std::size_t(face.side)];
+        const auto& p1 = prism.polygon[(std::size_t(face.side) + 1) % prism.polygon.size()];
+        const double length = std::hypot(p1.first - p0.first, p1.second - p0.second);
+        a = p0.first + t * (p1.first - p0.first);
+        b = p0.second + t * (p1.second - p0.second);
+        na = (p1.second - p0.second) / length; // counterclockwise: out is to the right
+        nb = -(p1.first - p0.first) / length;
+      }
+    }
+    const Point p = prism.origin + a * prism.u + b * prism.v + c * prism.w();
+    Vector normal = na * prism.u + nb * prism.v + nc * prism.w();
+    if(face.removed)
+      normal = -normal; // out of the solid is into the hole
+    const double epsilon = 1e-9 * (std::max)(1., std::sqrt((p - CGAL::ORIGIN).squared_length()));
+    bool rejected = !solid.contains(p - epsilon * normal) || solid.contains(p + epsilon * normal);
+    for(std::size_t i = 0; i < face.prism && !rejected; ++i)
+      rejected = prisms[i].contains(p, epsilon);
+    s.point = p;
+    s.truth = normal;
+    return !rejected;
+  });
+}
+
+/// A thick disk with narrow slots: the disk of radius 1, z in [-0.15, 0.15],
+/// with a bore of radius 0.25 and its keyway, 0.06 wide and 0.08 deep, and 6
+/// radial slots 0.03 wide (1% of the diagonal) cut through it from radius
+/// 0.55 to the rim.
+inline Solid slotted_disk_solid()
+{
+  Solid solid;
+  solid.added.push_back(cylinder_prism(Point(0, 0, -0.15), Vector(0, 0, 1), 1, 0.3));
+  solid.removed.push_back(cylinder_prism(Point(0, 0, -0.2), Vector(0, 0, 1), 0.25, 0.4));
+  solid.removed.push_back(box_prism(Point(0.2, -0.03, -0.2), Point(0.33, 0.03, 0.2)));
+  for(int slot = 0; slot < 6; ++slot)
+    solid.removed.push_back(turned_prism({ { 0.55, -0.015 }, { 1.1, -0.015 }, { 1.1, 0.015 }, { 0.55, 0.015 } },
+                                         pi / 6 + slot * pi / 3, -0.2, 0.2));
+  return solid;
+}
+
+/// `slotted_disk_solid()`'s boundary (a closed surface, as every shape
+/// below), uniformly over its area with the normal out of it.
+inline Cloud slotted_disk(std::size_t n, unsigned int seed) { return solid_boundary(slotted_disk_solid(), n, seed); }
+
+/// A spool: a shaft of radius 0.3 along z in [-0.8, 0.8] with a groove 0.1
+/// wide and 0.08 deep around its middle, between two flanges of radius 1 and
+/// 0.04 thick (1.2% of the diagonal), bored through with a radius of 0.12.
+inline Solid spool_solid()
+{
+  Solid solid;
+  const Vector z(0, 0, 1);
+  solid.added.push_back(cylinder_prism(Point(0, 0, -0.8), z, 0.3, 0.75));
+  solid.added.push_back(cylinder_prism(Point(0, 0, 0.05), z, 0.3, 0.75));
+  solid.added.push_back(cylinder_prism(Point(0, 0, -0.8), z, 0.22, 1.6));
+  solid.added.push_back(cylinder_prism(Point(0, 0, -0.84), z, 1, 0.04));
+  solid.added.push_back(cylinder_prism(Point(0, 0, 0.8), z, 1, 0.04));
+  solid.removed.push_back(cylinder_prism(Point(0, 0, -1), z, 0.12, 2));
+  return solid;
+}
+
+/// `spool_solid()`'s boundary.
+inline Cloud spool(std::size_t n, unsigned int seed) { return solid_boundary(spool_solid(), n, seed); }
+
+/// A block [-1,1] x [-0.6,0.6] x [-0.4,0.4] drilled with holes: four
+/// through its height (radii 0.2, 0.12, 0.08, 0.05), one through its width
+/// (0.08), three blind bores from the top (0.15, 0.1, 0.05; 0.5, 0.4 and
+/// 0.3 deep, with flat bottoms) and one from the side (0.08, 0.25 deep).
+/// The smallest are a few neighborhood radii across at 100k points.
+inline Solid drilled_block_solid()
+{
+  Solid solid;
+  solid.added.push_back(box_prism(Point(-1, -0.6, -0.4), Point(1, 0.6, 0.4)));
+  const Vector x(1, 0, 0), y(0, 1, 0), z(0, 0, 1);
+  const double through[4][3] = { { -0.6, -0.25, 0.2 }, { -0.1, -0.3, 0.12 }, { 0.35, -0.3, 0.08 }, { 0.75, -0.3, 0.05 } };
+  for(const auto& h : through)
+    solid.removed.push_back(cylinder_prism(Point(h[0], h[1], -0.5), z, h[2], 1));
+  solid.removed.push_back(cylinder_prism(Point(0.55, -0.7, 0), y, 0.08, 1.4));
+  const double blind[3][4] = { { -0.6, 0.3, 0.15, 0.5 }, { -0.1, 0.3, 0.1, 0.4 }, { 0.35, 0.3, 0.05, 0.3 } };
+  for(const auto& h : blind)
+    solid.removed.push_back(cylinder_prism(Point(h[0], h[1], 0.4 - h[3]), z, h[2], h[3] + 0.1));
+  solid.removed.push_back(cylinder_prism(Point(-1.1, 0, 0), x, 0.08, 0.35));
+  return solid;
+}
+
+/// `drilled_block_solid()`'s boundary.
+inline Cloud drilled_block(std::size_t n, unsigned int seed) { return solid_boundary(drilled_block_solid(), n, seed); }
+
+/// A spur gear of 24 straight trapezoidal teeth, from the root circle of
+/// radius 0.85 to the tip at radius 1 (0.12 wide at the root, 0.06 at the
+/// tip, the gaps 0.1 wide at the root), z in [-0.1, 0.1], bored with a
+/// radius of 0.3.
+inline Solid spur_gear_solid()
+{
+  Solid solid;
+  solid.added.push_back(cylinder_prism(Point(0, 0, -0.1), Vector(0, 0, 1), 0.85, 0.2));
+  for(int tooth = 0; tooth < 24; ++tooth)
+    solid.added.push_back(turned_prism({ { 0.8, -0.065 }, { 1, -0.03 }, { 1, 0.03 }, { 0.8, 0.065 } },
+                                       tooth * pi / 12, -0.1, 0.1));
+  solid.removed.push_back(cylinder_prism(Point(0, 0, -0.2), Vector(0, 0, 1), 0.3, 0.4));
+  return solid;
+}
+
+/// `spur_gear_solid()`'s boundary.
+inline Cloud spur_gear(std::size_t n, unsigned int seed) { return solid_boundary(spur_gear_solid(), n, seed); }
+
+/// The camber of `closed_blade()`.
+const double closed_blade_camber = 0.1;
+
+/// A thin closed blade whose thickness goes to zero at its edges: between
+/// the parabolas y = (c + t/2)(1 - x^2) and y = (c - t/2)(1 - x^2), x in
+/// [-1,1] (camber c = `closed_blade_camber`, thickness t at the middle),
+/// extruded along z in [-1,1] with flat caps.
+inline Cloud closed_blade(std::size_t n, double t, unsigned int seed)
+{
+  const double high = closed_blade_camber + t / 2, low = closed_blade_camber - t / 2;
+  // The sides' area element sqrt(1 + (2 a x)^2) dx dz is at most `bound`;
+  // each side's area and a cap's (4 t / 3) weigh the pick.
+  auto side_area = [](double a) { // the arc length of y = a (1 - x^2), x in [-1,1], times the length 2
+    const double s = std::sqrt(1 + 4 * a * a);
+    return 2 * (s + std::asinh(2 * a) / (2 * a));
+  };
+  const double upper = side_area(high), lower = side_area(std::abs(low) > 1e-12 ? std::abs(low) : 1e-12),
+               caps = 2 * 4 * t / 3;
+  return generate(n, seed, [=](std::mt19937& rng, std::uniform_real_distribution<double>& u, Sample& s) {
+    const double piece = u(rng) * (upper + lower + caps);
+    double x;
+    if(piece < upper + lower)
+    {
+      const double a = piece < upper ? high : low, bound = std::sqrt(1 + 4 * a * a);
+      do
+        x = 2 * u(rng) - 1;
+      while(u(rng) * bound > std::sqrt(1 + 4 * a * a * x * x));
+      const double side = piece < upper ? 1. : -1.; // up the upper side, down the lower one
+      s.point = Point(x, a * (1 - x * x), 2 * u(rng) - 1);
+      const Vector normal(side * 2 * a * x, side, 0);
+      s.truth = normal / std::sqrt(normal.squared_length());
+      return;
+    }
+    do // uniformly between the parabolas: the width t (1 - x^2)
+      x = 2 * u(rng) - 1;
+    while(u(rng) > 1 - x * x);
+    const double z = u(rng) < 0.5 ? -1. : 1.;
+    s.point = Point(x, low * (1 - x * x) + u(rng) * t * (1 - x * x), z);
+    s.truth = Vector(0, 0, z);
   });
 }
 

@@ -56,7 +56,12 @@ namespace CGAL {
    apart by the offsets of the points along the normal, a pair agrees only
    when each point is on the other's sheet, and is opposite when each is on
    the sheet next to the other's, across the chord; other pairs give no
-   evidence. Across a sharp edge, where that dot product is noise, they
+   evidence. Such a pair weighs as much as the less supported of its two
+   normals, a normal's support being the square of the share of the point's
+   `k` nearest neighbors that lie on its tangent plane: normals that are not
+   the surface's, such as the faces' normals on the narrow rim of a plate,
+   each on the plane of the next, would otherwise chain the two faces into
+   one sheet and turn one of them over. Across a sharp edge, where that dot product is noise, they
    agree by the sign of the dot product of one normal with the other
    reflected through the plane that bisects them (the reflection criterion
    of Xie et al. 2003). Clusters are joined by the sum of the evidence

@@ -56,6 +56,29 @@ inline double offset_scale(const Neighborhood& neighborhood, std::size_t nearest
   return *quartile;
 }
 
+/// How surely the tangent plane of `normal` at a point is the surface's,
+/// from the offsets `offsets` of the point (0) and its nearest neighbors
+/// from that plane (reordered on return): the share of them within `band`
+/// of their median, squared. A normal that is not the surface's, such as a
+/// face's normal on the narrow rim of a plate, leaves most neighbors off
+/// its plane; the median, rather than the point's own offset, keeps a
+/// noisy point's support. Its square weighs the evidence of parallel
+/// normals: a band of such points, each on the plane of the next, would
+/// otherwise chain the two faces of the plate into one sheet.
+inline double plane_support(std::vector<double>& offsets, double band)
+{
+  if(offsets.size() < 2)
+    return 1;
+  const auto middle = offsets.begin() + std::ptrdiff_t(offsets.size() / 2);
+  std::nth_element(offsets.begin(), middle, offsets.end());
+  const double median = *middle;
+  std::size_t on_plane = 0;
+  for(double o : offsets)
+    on_plane += std::abs(o - median) <= band;
+  const double share = double(on_plane) / double(offsets.size());
+  return share * share;
+}
+
 /// Normals within 30 degrees of each other are parallel.
 constexpr double cos_parallel = 0.8660254037844386;
 
@@ -198,12 +221,24 @@ std::vector<Signed_edge> orientation_edges(const Neighbor_search& search, const 
   };
   const double noise = (std::max)(median(spreads), 1e-3 * median(radii));
   std::vector<Sheets> sheets(size);
+  std::vector<double> support(size);
   for_each_block<ConcurrencyTag>(size, no_progress, [] { return std::vector<double>(); },
                                  [&](std::size_t begin, std::size_t end, std::vector<double>& work) {
     for(std::size_t i = begin; i < end; ++i)
     {
       work.assign(offsets.begin() + std::ptrdiff_t(i * row), offsets.begin() + std::ptrdiff_t(i * row + counts[i]));
       sheets[i] = Sheets(work, noise);
+      // The plane's band: the noise, and the bend of a curved surface over
+      // the neighborhood.
+      work.assign(1, 0.);
+      double radius = 0;
+      for(std::size_t t = 0; t < k; ++t)
+      {
+        const Eigen::Vector3d d = search.point(neighbors[i * k + t]) - search.point(i);
+        work.push_back(normals[i].dot(d));
+        radius = (std::max)(radius, d.norm());
+      }
+      support[i] = plane_support(work, 3 * noise + 0.15 * radius);
     }
   });
   // Each pair once: a mutual pair by its first point, else by the point
@@ -220,9 +255,13 @@ std::vector<Signed_edge> orientation_edges(const Neighbor_search& search, const 
         if(j < i && std::find(first, first + k, std::uint32_t(i)) != first + k)
           continue;
         const Eigen::Vector3d d = search.point(j) - search.point(i);
+        // Across a sharp edge, each normal is its own face's, whatever its
+        // support.
+        const double trust =
+          std::abs(normals[i].dot(normals[j])) > cos_parallel ? (std::min)(support[i], support[j]) : 1.;
         blocks[block].push_back({ std::uint32_t((std::min<std::size_t>)(i, j)), std::uint32_t((std::max<std::size_t>)(i, j)),
-                                  signed_weight(d, normals[i], normals[j], scales[i], scales[j], sheets[i], sheets[j],
-                                                axes[i], axes[j]) });
+                                  trust * signed_weight(d, normals[i], normals[j], scales[i], scales[j], sheets[i],
+                                                        sheets[j], axes[i], axes[j]) });
       }
     return true;
   });
