@@ -489,12 +489,14 @@ inline Cloud solid_boundary(const Solid& solid, std::size_t n, unsigned int seed
     for(std::size_t i = 0; i < prisms.size(); ++i)
     {
       const Prism& p = prisms[i];
+      // The two caps, then the sides: the disk's, or one per side of the polygon.
       double cap = pi * p.radius * p.radius;
-      std::vector<double> sides(1, 2 * pi * p.radius * (p.top - p.bottom));
-      if(!p.polygon.empty())
+      std::vector<double> sides;
+      if(p.polygon.empty())
+        sides.push_back(2 * pi * p.radius * (p.top - p.bottom));
+      else
       {
         cap = 0;
-        sides.clear();
         for(std::size_t e = 0; e < p.polygon.size(); ++e)
         {
           const auto& a = p.polygon[e];
@@ -503,12 +505,10 @@ inline Cloud solid_boundary(const Solid& solid, std::size_t n, unsigned int seed
           sides.push_back(std::hypot(b.first - a.first, b.second - a.second) * (p.top - p.bottom));
         }
       }
-      std::vector<double> areas = { cap, cap };
-      areas.insert(areas.end(), sides.begin(), sides.end());
-      for(std::size_t f = 0; f < areas.size(); ++f)
+      for(int side = -2; side < int(sides.size()); ++side)
       {
-        faces.push_back(Face{ removed == 1, i, int(f) - 2 });
-        face_areas.push_back(areas[f]);
+        faces.push_back(Face{ removed == 1, i, side });
+        face_areas.push_back(side < 0 ? cap : sides[std::size_t(side)]);
       }
     }
   }

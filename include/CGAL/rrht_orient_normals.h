@@ -61,10 +61,10 @@ namespace CGAL {
    `k` nearest neighbors that lie on its tangent plane: normals that are not
    the surface's, such as the faces' normals on the narrow rim of a plate,
    each on the plane of the next, would otherwise chain the two faces into
-   one sheet and turn one of them over. Across a sharp edge, where that dot product is noise, they
-   agree by the sign of the dot product of one normal with the other
-   reflected through the plane that bisects them (the reflection criterion
-   of Xie et al. 2003). Clusters are joined by the sum of the evidence
+   one sheet and turn one of them over. Across a sharp edge, where that dot
+   product is noise, they agree by the sign of the dot product of one normal
+   with the other reflected through the plane that bisects them (the
+   reflection criterion of Xie et al. 2003). Clusters are joined by the sum of the evidence
    between them, strongest first, so that a few wrong edges are outvoted.
    Each cluster is then turned so that the flux of the position through it
    is positive (outward on a closed surface), and flipped where it lies
