@@ -64,13 +64,19 @@ namespace CGAL {
    one sheet and turn one of them over. Across a sharp edge, where that dot
    product is noise, they agree by the sign of the dot product of one normal
    with the other reflected through the plane that bisects them (the
-   reflection criterion of Xie et al. 2003). Clusters are joined by the sum of the evidence
-   between them, strongest first, so that a few wrong edges are outvoted.
-   Each cluster is then turned so that the flux of the position through it
+   reflection criterion of Xie et al. 2003). Clusters are joined by the sum
+   of the evidence between them, strongest first, so that a few wrong edges
+   are outvoted. Each cluster is then turned so that the flux of the position through it
    is positive (outward on a closed surface), and flipped where it lies
    within an odd number of others (the walls of a cavity, whose outside is
    the cavity), by the winding number of their oriented points. An open
-   surface ends up oriented to one side. Clusters with no evidence between
+   surface ends up oriented to one side. Last, within each cluster, the
+   signs are relaxed by all its edges at once, as the signs of the
+   least-squares values that make each pair agree as its edge says, lightly
+   held to the joins' signs: a part that an early join on little evidence
+   turned over, such as the sides near the knife edges of a blade whose
+   sides meet at a small angle, is turned back where its edges say so.
+   Clusters with no evidence between
    them, such as separate objects, are each oriented so. Only the lines of
    the given normals count: flipping any of them before the call changes
    nothing in the result. See the user manual for the choice and its

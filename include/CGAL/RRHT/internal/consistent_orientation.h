@@ -10,11 +10,13 @@
 #include <CGAL/RRHT/internal/Signed_agglomeration.h>
 #include <CGAL/RRHT/internal/orientation_edges.h>
 #include <CGAL/RRHT/internal/outward_signs.h>
+#include <CGAL/RRHT/internal/relaxed_signs.h>
 
 #include <Eigen/Core>
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -34,10 +36,11 @@ inline int canonical_sign(const Eigen::Vector3d& normal)
 /// The sign, +1 or -1, by which each unit normal of `given` (in the order
 /// of `search`) is to be multiplied: the signed edges of the graph of the
 /// `k` nearest neighbors (`orientation_edges()`) join the points into
-/// consistently oriented clusters (`signed_clusters()`), and each
-/// cluster is turned out of the solid (`outward_signs()`). The normals are
-/// first turned to a sense that depends on their lines only, so that the
-/// result does not depend on the senses given, to the last bit.
+/// consistently oriented clusters (`signed_clusters()`), each cluster is
+/// turned out of the solid (`outward_signs()`), and the signs within each
+/// cluster are relaxed by all its edges at once (`relaxed_signs()`). The
+/// normals are first turned to a sense that depends on their lines only, so
+/// that the result does not depend on the senses given, to the last bit.
 template <typename ConcurrencyTag>
 std::vector<int> consistent_orientation(const Neighbor_search& search, const std::vector<Eigen::Vector3d>& given,
                                         unsigned int k)
@@ -56,8 +59,8 @@ std::vector<int> consistent_orientation(const Neighbor_search& search, const std
   // Blocks of 8192 points along the search's Hilbert order: large enough
   // that the clusters are nearly those of one agglomeration of the whole
   // graph, small enough that each block's heap stays in the cache.
-  const Signed_clusters clusters =
-    signed_clusters<ConcurrencyTag>(size, orientation_edges<ConcurrencyTag>(search, normals, k, areas), 8192);
+  const std::vector<Signed_edge> edges = orientation_edges<ConcurrencyTag>(search, normals, k, areas);
+  const Signed_clusters clusters = signed_clusters<ConcurrencyTag>(size, edges, 8192);
   std::vector<std::uint32_t> cluster(size);
   std::vector<int> signs(size);
   std::vector<Eigen::Vector3d> points(size);
@@ -71,7 +74,10 @@ std::vector<int> consistent_orientation(const Neighbor_search& search, const std
   const std::vector<int> outward = outward_signs(members, points, normals, signs, areas);
   for(std::size_t c = 0; c < members.size(); ++c)
     for(std::uint32_t v : members[c])
-      signs[v] *= outward[c] * canonical[v];
+      signs[v] *= outward[c];
+  signs = relaxed_signs(size, edges, cluster, std::move(signs));
+  for(std::size_t v = 0; v < size; ++v)
+    signs[v] *= canonical[v];
   return signs;
 }
 
