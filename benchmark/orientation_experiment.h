@@ -153,8 +153,7 @@ Cloud thin_shape(const std::string& name, std::size_t n, unsigned int seed)
 /// of its cloud: the cube, the closed cylinder, the fandisk and anchor meshes
 /// of ../shared/data, the hollow box, the finned part, and the machined parts
 /// of test/shapes.h (a slotted disk, a spool, a drilled block, a spur gear,
-/// and a closed blade 0.04 thick at its middle, whose thickness goes to zero
-/// at its edges).
+/// and the closed blade, whose thickness goes to zero at its edges).
 const std::pair<const char*, unsigned int> closed_shape_list[] = {
   { "cube", 41 },         { "cylinder", 42 }, { "fandisk", 43 },      { "anchor", 43 },
   { "hollow_box", 44 },   { "finned_part", 45 }, { "slotted_disk", 52 }, { "spool", 53 },
@@ -182,18 +181,10 @@ bool closed_cloud(const Config& config, const std::string& name, std::size_t n, 
   }
   else if(name == "hollow_box" || name == "finned_part")
     cloud = thin_shape(name, n, seed);
-  else if(name == "slotted_disk")
-    cloud = slotted_disk(n, seed);
-  else if(name == "spool")
-    cloud = spool(n, seed);
-  else if(name == "drilled_block")
-    cloud = drilled_block(n, seed);
-  else if(name == "gear")
-    cloud = spur_gear(n, seed);
   else if(name == "closed_blade")
-    cloud = closed_blade(n, 0.04, seed);
+    cloud = closed_blade(n, closed_blade_thickness, seed);
   else
-    throw std::invalid_argument("unknown closed shape " + name);
+    cloud = solid_boundary(machined_part_solid(name), n, seed); // throws on an unknown name
   truth_outward(cloud, convex_about_origin); // the machined parts' truths are outward already: harmless
   return true;
 }

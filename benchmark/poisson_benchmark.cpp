@@ -31,7 +31,6 @@
 #include <CGAL/IO/facets_in_complex_2_to_triangle_mesh.h>
 #endif
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/boost/graph/generators.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 // GCC 12 at -O3 warns of a maybe uninitialized value within CGAL 5.5's
@@ -127,36 +126,6 @@ bool make_truth(Mesh mesh, Truth& truth)
                              CGAL::square(box.zmax() - box.zmin()));
   truth.mesh = std::move(mesh);
   return true;
-}
-
-/// The finned part of test/shapes.h, `finned_part()`, as a closed mesh: the
-/// union of its boxes (exact corefinement, then rounded).
-Mesh finned_part_mesh()
-{
-  const auto box = [](double x0, double y0, double z0, double x1, double y1, double z1) {
-    Exact_mesh m;
-    CGAL::make_hexahedron(E::Point_3(x0, y0, z0), E::Point_3(x1, y0, z0), E::Point_3(x1, y1, z0),
-                          E::Point_3(x0, y1, z0), E::Point_3(x0, y1, z1), E::Point_3(x0, y0, z1),
-                          E::Point_3(x1, y0, z1), E::Point_3(x1, y1, z1), m);
-    PMP::triangulate_faces(m);
-    if(!PMP::is_outward_oriented(m))
-      PMP::reverse_face_orientations(m);
-    return m;
-  };
-  // The same boxes as finned_part(): 8 fins 0.03 thick, 0.03 apart, on a block.
-  const int fins = 8;
-  const double thickness = 0.03, gap = 0.03, start = -(fins * thickness + (fins - 1) * gap) / 2;
-  Exact_mesh part = box(-1, -1, -0.3, 1, 1, 0);
-  for(int i = 0; i < fins; ++i)
-  {
-    const double x0 = start + i * (thickness + gap);
-    Exact_mesh fin = box(x0, -0.8, 0, x0 + thickness, 0.8, 0.6);
-    if(!PMP::corefine_and_compute_union(part, fin, part))
-      throw std::runtime_error("the union of the finned part's boxes failed");
-  }
-  Mesh mesh;
-  CGAL::copy_face_graph(part, mesh);
-  return mesh;
 }
 
 /// How far the true meshes of the machined parts and the closed blade may
@@ -319,14 +288,11 @@ Mesh closed_blade_mesh(double t, std::size_t sides)
   return mesh;
 }
 
-/// The thickness of the closed blade (at its middle), as in the orientation experiment.
-const double closed_blade_thickness = 0.04;
-
 /// The polyline's segments for a chord error of at most `max_error` on the
 /// closed blade's more curved side, y = a (1 - x^2): a (2 / sides)^2 / 4.
 std::size_t closed_blade_sides(double max_error)
 {
-  const double a = rrht_test::closed_blade_camber + closed_blade_thickness / 2;
+  const double a = rrht_test::closed_blade_camber + rrht_test::closed_blade_thickness / 2;
   return (std::max)(std::size_t(16), std::size_t(std::ceil(2 * std::sqrt(a / (4 * max_error)))));
 }
 
@@ -543,10 +509,11 @@ struct Shape
 
 /// The shapes: meshes of ../shared/data sampled (face normal as truth), the
 /// finned part, the machined parts (slotted disk, spool, drilled block, gear)
-/// and the closed blade of test/shapes.h. A mesh absent is skipped, with a
-/// message. The samples must lie on the true mesh: exactly on the exact
-/// meshes, within twice `chord_error` of the diagonal on those with curved
-/// faces.
+/// and the closed blade of test/shapes.h, their meshes built from their
+/// prisms (the finned part's boxes) or the blade's polylines. A mesh absent
+/// is skipped, with a message. The samples must lie on the true mesh:
+/// exactly on the meshes of ../shared/data, within twice `chord_error` of
+/// the diagonal on the built ones.
 std::vector<Shape> shapes(const std::string& data, const std::vector<std::string>& names, std::size_t n)
 {
   std::vector<Shape> result;
@@ -556,28 +523,29 @@ std::vector<Shape> shapes(const std::string& data, const std::vector<std::string
     s.name = name;
     Mesh mesh;
     double tolerance = 1e-9; // of the diagonal: how far a sample may lie from the true mesh
-    if(name == "finned")
+    if(name == "finned" || name == "slotted_disk" || name == "spool" || name == "drilled_block" || name == "gear" ||
+       name == "closed_blade")
     {
-      mesh = finned_part_mesh();
-      s.cloud = rrht_test::finned_part(n, 7);
-    }
-    else if(name == "slotted_disk" || name == "spool" || name == "drilled_block" || name == "gear" ||
-            name == "closed_blade")
-    {
-      s.cloud = name == "slotted_disk"    ? rrht_test::slotted_disk(n, 7)
-                : name == "spool"         ? rrht_test::spool(n, 7)
-                : name == "drilled_block" ? rrht_test::drilled_block(n, 7)
-                : name == "gear"          ? rrht_test::spur_gear(n, 7)
-                                          : rrht_test::closed_blade(n, closed_blade_thickness, 7);
+      s.cloud = name == "finned"         ? rrht_test::finned_part(n, 7)
+                : name == "closed_blade" ? rrht_test::closed_blade(n, rrht_test::closed_blade_thickness, 7)
+                                         : rrht_test::solid_boundary(rrht_test::machined_part_solid(name), n, 7);
       // The diagonal of the cloud, a little under the mesh's, bounds the chord error.
       const double max_error = chord_error * rrht_test::bounding_box_diagonal(s.cloud);
       CGAL::Real_timer timer;
       timer.start();
-      mesh = name == "slotted_disk"    ? solid_mesh(rrht_test::slotted_disk_solid(), max_error)
-             : name == "spool"         ? solid_mesh(rrht_test::spool_solid(), max_error)
-             : name == "drilled_block" ? solid_mesh(rrht_test::drilled_block_solid(), max_error)
-             : name == "gear"          ? solid_mesh(rrht_test::spur_gear_solid(), max_error)
-                                       : closed_blade_mesh(closed_blade_thickness, closed_blade_sides(max_error));
+      if(name == "closed_blade")
+        mesh = closed_blade_mesh(rrht_test::closed_blade_thickness, closed_blade_sides(max_error));
+      else
+      {
+        rrht_test::Solid solid;
+        if(name == "finned")
+          for(const rrht_test::Box& box : rrht_test::finned_part_boxes())
+            solid.added.push_back(rrht_test::box_prism(rrht_test::Point(box.lo[0], box.lo[1], box.lo[2]),
+                                                       rrht_test::Point(box.hi[0], box.hi[1], box.hi[2])));
+        else
+          solid = rrht_test::machined_part_solid(name);
+        mesh = solid_mesh(solid, max_error);
+      }
       timer.stop();
       std::cout << name << ": true mesh built in " << fixed(timer.time(), 1) << " s" << std::endl;
       tolerance = 2 * chord_error;

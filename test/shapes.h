@@ -16,6 +16,7 @@
 #include <fstream>
 #include <random>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -343,11 +344,10 @@ inline Cloud box_union(const std::vector<Box>& boxes, std::size_t n, unsigned in
   });
 }
 
-/// A finned part, uniformly over its area with the outward normal: the base
-/// block [-1,1] x [-1,1] x [-0.3,0] with 8 fins [x0, x0+0.03] x [-0.8,0.8] x
-/// [0,0.6] on top, 0.03 thick (about 1% of the diagonal) with gaps of 0.03
-/// between them, centred in x.
-inline Cloud finned_part(std::size_t n, unsigned int seed)
+/// The boxes of a finned part: the base block [-1,1] x [-1,1] x [-0.3,0]
+/// with 8 fins [x0, x0+0.03] x [-0.8,0.8] x [0,0.6] on top, 0.03 thick
+/// (about 1% of the diagonal) with gaps of 0.03 between them, centred in x.
+inline std::vector<Box> finned_part_boxes()
 {
   const int fins = 8;
   const double thickness = 0.03, gap = 0.03, start = -(fins * thickness + (fins - 1) * gap) / 2;
@@ -357,8 +357,12 @@ inline Cloud finned_part(std::size_t n, unsigned int seed)
     const double x0 = start + i * (thickness + gap);
     boxes.push_back(Box{ { x0, -0.8, 0 }, { x0 + thickness, 0.8, 0.6 } });
   }
-  return box_union(boxes, n, seed);
+  return boxes;
 }
+
+/// `finned_part_boxes()`'s union, uniformly over its area with the outward
+/// normal.
+inline Cloud finned_part(std::size_t n, unsigned int seed) { return box_union(finned_part_boxes(), n, seed); }
 
 /// An open thin blade, like a turbine blade, uniformly over its area: the
 /// ellipse c(u) = (cos u, (t/2) sin u) of the plane xy (chord 2 along x,
@@ -655,8 +659,27 @@ inline Solid spur_gear_solid()
 /// `spur_gear_solid()`'s boundary.
 inline Cloud spur_gear(std::size_t n, unsigned int seed) { return solid_boundary(spur_gear_solid(), n, seed); }
 
+/// The machined parts above by name: "slotted_disk", "spool",
+/// "drilled_block" or "gear".
+inline Solid machined_part_solid(const std::string& name)
+{
+  if(name == "slotted_disk")
+    return slotted_disk_solid();
+  if(name == "spool")
+    return spool_solid();
+  if(name == "drilled_block")
+    return drilled_block_solid();
+  if(name == "gear")
+    return spur_gear_solid();
+  throw std::invalid_argument("unknown machined part " + name);
+}
+
 /// The camber of `closed_blade()`.
 const double closed_blade_camber = 0.1;
+
+/// The thickness at the middle of the closed blade that the tests and the
+/// benchmark use: 2% of its chord.
+const double closed_blade_thickness = 0.04;
 
 /// A thin closed blade whose thickness goes to zero at its edges: between
 /// the parabolas y = (c + t/2)(1 - x^2) and y = (c - t/2)(1 - x^2), x in

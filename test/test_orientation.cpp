@@ -167,7 +167,7 @@ TEST_CASE("Consistent orientation of a closed blade: its knife edges do not carr
   // sheet. Joined greedily, that wrong evidence turned over patches of the
   // sides far from the edges (6% of the normals inward, a patch of 1792
   // points); relaxed by all the edges at once, the sides turn back.
-  Cloud cloud = closed_blade(50000, 0.04, 17);
+  Cloud cloud = closed_blade(50000, closed_blade_thickness, 17);
   CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(cloud, 100, maps);
   const auto end = CGAL::rrht_orient_normals<CGAL::Parallel_if_available_tag>(cloud, 18, maps);
   REQUIRE(end == cloud.end());
