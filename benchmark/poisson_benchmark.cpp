@@ -612,7 +612,9 @@ int main(int argc, char** argv)
     ("data", po::value<std::string>()->default_value("../shared/data"), "the shared data folder (MANIFEST.md)")
     ("out", po::value<std::string>()->required(), "folder of poisson.csv and poisson.md")
     ("scratch", po::value<std::string>()->default_value(""), "folder of the surfaces (.off), if given")
-    ("shapes", po::value<std::string>()->default_value("fandisk,anchor,cube,finned"),
+    ("shapes",
+     po::value<std::string>()->default_value("fandisk,anchor,cube,finned,slotted_disk,spool,drilled_block,gear,"
+                                             "closed_blade"),
      "comma-separated: fandisk, anchor, cube (meshes of --data), finned, slotted_disk, spool, drilled_block, "
      "gear and closed_blade (test/shapes.h)")
     ("points", po::value<std::size_t>()->default_value(100000), "points per cloud")
