@@ -8,6 +8,13 @@
 //
 // Without arguments: the bundled data/fandisk_20k.xyz, reconstructed into
 // fandisk_20k_poisson.off in the current folder.
+//
+// What the surface cannot be trusted on: where two sides of the solid come
+// within a few noise deviations of each other (thin walls and fins under
+// noise) or meet at a small angle (knife edges), the points alone cannot
+// always tell which side a point is on. Some of their normals come out
+// inward there, and Poisson grows a spurious sheet from each such patch.
+// The user manual's "Known limits" of the orientation says how much.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/rrht_estimate_normals.h>

@@ -48,6 +48,7 @@ if [ "$mode" = poisson ]; then
   "$build/benchmark/poisson_benchmark" --out "$out" --scratch "$scratch" --data "$root/../shared/data" "$@" |
     tee "$build/benchmark-${results//\//-}.log"
   /usr/bin/python3 "$root/benchmark/poisson_pictures.py" "$out" "$scratch"
+  /usr/bin/python3 "$root/benchmark/report_poisson.py" "$out"
   { echo "# Benchmark results"; echo; cat "$out/machine.txt"; echo; echo "- [Poisson surfaces against the true meshes](poisson.md)"; } > "$out/README.md"
 else
   "$build/benchmark/rrht_benchmark" --mode "$mode" --out "$out" --scratch "$scratch" \
