@@ -8,6 +8,7 @@
 // poisson.csv and poisson.md into --out, the surfaces into --scratch.
 
 #include "datasets.h"
+#include "orientation_scores.h"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -465,30 +466,25 @@ Normal_errors normal_errors(const Mesh& mesh, const Truth& truth, const Face_tre
   return e;
 }
 
-/// The share of the points whose oriented normal points against the truth,
-/// among those within 60 degrees of its line (as the orientation experiment
-/// scores; on a sharp edge, a normal may take the other face's). The points
-/// are matched by position: the orientations reorder them.
-double flipped_percent(const std::vector<Point_with_normal>& oriented, const rrht_test::Cloud& cloud)
+/// The share of the points whose oriented normal points into the solid
+/// (`rrht_test::inward()`), among those within 60 degrees of the exact
+/// normal's line. The points are matched by position: the orientations
+/// reorder them.
+double flipped_percent(const std::vector<Point_with_normal>& oriented, rrht_test::Cloud cloud)
 {
-  std::vector<std::pair<Point, Vector> > truth;
-  truth.reserve(cloud.size());
-  for(const rrht_test::Sample& s : cloud)
-    truth.emplace_back(Point(s.point.x(), s.point.y(), s.point.z()), Vector(s.truth.x(), s.truth.y(), s.truth.z()));
-  const auto less = [](const Point_with_normal& p, const Point_with_normal& q) { return p.first < q.first; };
-  std::sort(truth.begin(), truth.end(), less);
+  const auto less = [](const rrht_test::Sample& s, const rrht_test::Sample& t) { return s.point < t.point; };
+  std::sort(cloud.begin(), cloud.end(), less);
   std::size_t flipped = 0, scored = 0;
   for(const Point_with_normal& p : oriented)
   {
-    const auto t = std::lower_bound(truth.begin(), truth.end(), p, less);
-    if(t == truth.end() || t->first != p.first)
+    rrht_test::Sample key;
+    key.point = rrht_test::Point(p.first.x(), p.first.y(), p.first.z());
+    const auto s = std::lower_bound(cloud.begin(), cloud.end(), key, less);
+    if(s == cloud.end() || s->point != key.point)
       continue;
-    const double cosine = p.second * t->second / std::sqrt(p.second.squared_length() * t->second.squared_length());
-    if(std::abs(cosine) >= 0.5)
-    {
-      ++scored;
-      flipped += cosine < 0;
-    }
+    s->normal = rrht_test::Vector(p.second.x(), p.second.y(), p.second.z());
+    scored += std::abs(rrht_test::cosine_to_truth(*s)) >= 0.5;
+    flipped += rrht_test::inward(*s);
   }
   return scored == 0 ? 0 : 100. * flipped / scored;
 }

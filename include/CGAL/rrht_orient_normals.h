@@ -52,11 +52,13 @@ namespace CGAL {
    whether their two normals agree. Nearly parallel normals agree by the
    sign of their dot product where each point lies on the other's tangent
    plane (as in `CGAL::mst_orient_normals()`). Where a neighborhood holds
-   several parallel sheets, the sides of a thin part or of a narrow gap told
-   apart by the offsets of the points along the normal, a pair agrees only
-   when each point is on the other's sheet, and is opposite when each is on
-   the sheet next to the other's, across the chord; other pairs give no
-   evidence. Such a pair weighs as much as the less supported of its two
+   the two or three faces of a thin part or of a narrow gap, a pair agrees
+   only when each point is on the other's face, and is opposite when each
+   is on the face next to the other's, across the chord; other pairs give
+   no evidence. Parallel faces are told apart by the offsets of the points
+   along the normal; faces that meet at a small angle, such as the sides of
+   a blade near its edge, which lie within the noise of each other's
+   tangent planes there, by two planes fitted to the points (a wedge). Such a pair weighs as much as the less supported of its two
    normals, a normal's support being the square of the share of the point's
    `k` nearest neighbors that lie on its tangent plane: normals that are not
    the surface's, such as the faces' normals on the narrow rim of a plate,
@@ -74,8 +76,7 @@ namespace CGAL {
    signs are relaxed by all its edges at once, as the signs of the
    least-squares values that make each pair agree as its edge says, lightly
    held to the joins' signs: a part that an early join on little evidence
-   turned over, such as the sides near the knife edges of a blade whose
-   sides meet at a small angle, is turned back where its edges say so.
+   turned over is turned back where its edges say so.
    Clusters with no evidence between
    them, such as separate objects, are each oriented so. Only the lines of
    the given normals count: flipping any of them before the call changes

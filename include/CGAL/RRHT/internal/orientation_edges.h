@@ -11,6 +11,7 @@
 #include <CGAL/RRHT/internal/Neighbor_search.h>
 #include <CGAL/RRHT/internal/Progress.h>
 #include <CGAL/RRHT/internal/Sheets.h>
+#include <CGAL/RRHT/internal/Wedge.h>
 #include <CGAL/RRHT/internal/for_each_block.h>
 
 #include <CGAL/for_each.h>
@@ -83,17 +84,19 @@ inline double plane_support(std::vector<double>& offsets, double band)
 constexpr double cos_parallel = 0.8660254037844386;
 
 /// The signed weight of the edge from a point with unit normal `ni` to a
-/// neighbor at `d` from it with unit normal `nj`, their offset scales `si`
-/// and `sj`, and the sheets of their neighborhoods `hi` and `hj`, told apart
-/// along the unit axes `ai` and `aj`.
+/// neighbor at `d` from it with unit normal `nj`, given their offset scales
+/// `si` and `sj` and, where their normals are parallel, on which face of
+/// each other's neighborhood each lies: `side_i`, the neighbor's in the
+/// point's, and `side_j`, the point's in the neighbor's (+1 the own face, -1
+/// the next one, 0 unsure; +1 where a neighborhood holds one sheet).
 ///
 /// - Nearly parallel normals (within 30 degrees) are on one smooth sheet when
 ///   each point lies within the noise of the other's tangent plane (with
 ///   the bend that the angle of the normals implies), and, where either
-///   neighborhood holds several sheets (`Sheets`), on the other's sheet:
-///   their dot product says whether they agree (Hoppe et al. 1992). When
-///   each is on the sheet next to the other's, across the chord, they are
-///   the two sides of a thin part, or of a narrow gap, whose outward
+///   neighborhood holds several faces (`Sheets`, `Wedge`), on the other's
+///   face: their dot product says whether they agree (Hoppe et al. 1992).
+///   When each is on the face next to the other's, across the chord, they
+///   are the two sides of a thin part, or of a narrow gap, whose outward
 ///   normals point away from each other, or towards each other: opposite.
 ///   Otherwise, no evidence.
 /// - Across a sharp edge, the dot product is noise (perpendicular normals).
@@ -103,8 +106,7 @@ constexpr double cos_parallel = 0.8660254037844386;
 ///   reflection criterion of Xie et al. 2003, after König and Gumhold 2009),
 ///   and it is confident across a 90 degree edge.
 inline double signed_weight(const Eigen::Vector3d& d, const Eigen::Vector3d& ni, const Eigen::Vector3d& nj, double si,
-                            double sj, const Sheets& hi, const Sheets& hj, const Eigen::Vector3d& ai,
-                            const Eigen::Vector3d& aj)
+                            double sj, int side_i, int side_j)
 {
   const double noise_factor = 7, normal_tolerance = 0.03;
   const double length = d.norm(), c = ni.dot(nj);
@@ -114,20 +116,15 @@ inline double signed_weight(const Eigen::Vector3d& d, const Eigen::Vector3d& ni,
   {
     const double oi = ni.dot(d), oj = -nj.dot(d); // each one's offset from the other's tangent plane
     const double half_angle_sine = std::sqrt((std::max)(0., (1 - std::abs(c)) / 2));
+    // The band may reach across to the next face: the faces decide.
     const double band = noise_factor * (std::min)(si, sj) + length * (half_angle_sine + normal_tolerance);
-    const double along = 0.7071067811865476 * length; // within 45 degrees
-    if(hi.several() || hj.several())
-    {
-      // The band may reach across to the next sheet: the sheets decide.
-      // Across a thin part the chord runs along the normals; across a step
-      // or the rim of a plate, whose near points may take the rim's normal,
-      // it is oblique.
-      const int side_i = hi.side(ai.dot(d)), side_j = hj.side(-aj.dot(d));
-      if(side_i == 1 && side_j == 1 && std::abs(oi) <= band && std::abs(oj) <= band)
-        return c;
-      return side_i == -1 && side_j == -1 && std::abs(oi) > along && std::abs(oj) > along ? -c : 0.;
-    }
-    return std::abs(oi) <= band && std::abs(oj) <= band ? c : 0.;
+    if(side_i == 1 && side_j == 1 && std::abs(oi) <= band && std::abs(oj) <= band)
+      return c;
+    // Across a thin part the chord runs along the normals (within 45
+    // degrees); across a step or the rim of a plate, whose near points may
+    // take the rim's normal, it is oblique.
+    const double along = 0.7071067811865476 * length;
+    return side_i == -1 && side_j == -1 && std::abs(oi) > along && std::abs(oj) > along ? -c : 0.;
   }
   const Eigen::Vector3d u = d / length;
   return c - 2 * ni.dot(u) * nj.dot(u);
@@ -160,6 +157,7 @@ std::vector<Signed_edge> orientation_edges(const Neighbor_search& search, const 
   std::vector<double> scales(size), offsets(size * row), spreads(size), radii(size);
   std::vector<std::size_t> counts(size);
   std::vector<Eigen::Vector3d> axes(size);
+  std::vector<Wedge> wedges(size);
   areas.assign(size, 0.);
   struct Scratch
   {
@@ -167,6 +165,7 @@ std::vector<Signed_edge> orientation_edges(const Neighbor_search& search, const 
     Neighbor_search::Scratch search;
     std::vector<double> work;
     std::vector<std::size_t> parallel;
+    std::vector<Eigen::Vector3d> displacements;
   };
   const std::function<bool(double)> no_callback;
   Progress no_progress(no_callback, size);
@@ -207,6 +206,10 @@ std::vector<Signed_edge> orientation_edges(const Neighbor_search& search, const 
         offsets[i * row + t] = axes[i].dot(scratch.neighborhood.points[scratch.parallel[t]]);
       scratch.work.assign(offsets.begin() + std::ptrdiff_t(i * row), offsets.begin() + std::ptrdiff_t(i * row + counts[i]));
       spreads[i] = Sheets::spread_within_sheets(scratch.work);
+      scratch.displacements.clear();
+      for(std::size_t u : scratch.parallel)
+        scratch.displacements.push_back(scratch.neighborhood.points[u]);
+      wedges[i] = Wedge(scratch.displacements, axes[i]);
       radii[i] = scratch.neighborhood.radius;
       const double radius = scratch.neighborhood.points[nearest - 1].norm();
       areas[i] = CGAL_PI * radius * radius / double(nearest);
@@ -228,6 +231,9 @@ std::vector<Signed_edge> orientation_edges(const Neighbor_search& search, const 
     {
       work.assign(offsets.begin() + std::ptrdiff_t(i * row), offsets.begin() + std::ptrdiff_t(i * row + counts[i]));
       sheets[i] = Sheets(work, noise);
+      // Points within the noise of one plane are on one face.
+      if(!(wedges[i].deviation() > noise))
+        wedges[i] = Wedge();
       // The plane's band: the noise, and the bend of a curved surface over
       // the neighborhood.
       work.assign(1, 0.);
@@ -241,6 +247,11 @@ std::vector<Signed_edge> orientation_edges(const Neighbor_search& search, const 
       support[i] = plane_support(work, 3 * noise + 0.15 * radius);
     }
   });
+  // On which face of the point at position `p`'s neighborhood a neighbor at
+  // `d` from it lies: its wedge's, else its sheets'.
+  auto side = [&](std::size_t p, const Eigen::Vector3d& d) {
+    return wedges[p].found() ? wedges[p].side(d) : sheets[p].side(axes[p].dot(d));
+  };
   // Each pair once: a mutual pair by its first point, else by the point
   // whose neighbor the other is. The weight does not depend on which.
   std::vector<std::vector<Signed_edge> > blocks((size + 4095) / 4096);
@@ -260,8 +271,8 @@ std::vector<Signed_edge> orientation_edges(const Neighbor_search& search, const 
         const double trust =
           std::abs(normals[i].dot(normals[j])) > cos_parallel ? (std::min)(support[i], support[j]) : 1.;
         blocks[block].push_back({ std::uint32_t((std::min<std::size_t>)(i, j)), std::uint32_t((std::max<std::size_t>)(i, j)),
-                                  trust * signed_weight(d, normals[i], normals[j], scales[i], scales[j], sheets[i],
-                                                        sheets[j], axes[i], axes[j]) });
+                                  trust * signed_weight(d, normals[i], normals[j], scales[i], scales[j], side(i, d),
+                                                        side(j, -d)) });
       }
     return true;
   });
