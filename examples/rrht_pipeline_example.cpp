@@ -10,9 +10,9 @@
 // fandisk_20k_poisson.off in the current folder.
 //
 // What the surface cannot be trusted on: where two sides of the solid come
-// within a few noise deviations of each other (thin walls and fins under
-// noise) or meet at a small angle (knife edges), the points alone cannot
-// always tell which side a point is on. Some of their normals come out
+// within a few noise deviations of each other (thin walls and fins, and
+// knife edges, under noise), the points alone cannot always tell which side
+// a point is on. Some of their normals come out
 // inward there, and Poisson grows a spurious sheet from each such patch.
 // The user manual's "Known limits" of the orientation says how much.
 
