@@ -47,15 +47,18 @@ public:
       if(!split.found)
         continue;
       bool apart = true;
+      double closest = 0;
       for(int g = 1; g < groups; ++g)
       {
         const double gap = split.means[g] - split.means[g - 1];
         apart = apart && gap > local_ratio * split.spread && gap > global_ratio * noise;
+        closest = (g == 1) ? gap : (std::min)(closest, gap);
       }
       if(!apart)
         continue;
       m_groups = groups;
       std::copy(split.means, split.means + 3, m_means);
+      m_margin = unsure_share * closest / 2;
       for(int g = 1; g < groups; ++g)
         if(std::abs(m_means[g]) < std::abs(m_means[m_own]))
           m_own = g;
@@ -75,24 +78,29 @@ public:
   /// Whether the neighborhood holds more than one sheet.
   bool several() const { return m_groups > 1; }
 
-  /// +1 if a point at offset `offset` is on the point's own sheet (the
-  /// nearer to its offset of the sheets' means), -1 if on an adjacent one, 0
-  /// if on a sheet farther away. An offset near the boundary between two
-  /// sheets still goes to the nearer: what it says is outvoted where it is
-  /// wrong, and left out it leaves the points near the boundary, true to
-  /// their sheet but for a few, to the noise.
+  /// +1 if a point at offset `offset` is on the point's own sheet, -1 if on
+  /// an adjacent one, 0 if it is too close to the boundary between two
+  /// sheets to tell or on a sheet farther away.
   int side(double offset) const
   {
     int group = 0;
     for(int g = 1; g < m_groups; ++g)
-      if(offset > (m_means[g - 1] + m_means[g]) / 2)
+    {
+      const double boundary = (m_means[g - 1] + m_means[g]) / 2;
+      if(std::abs(offset - boundary) < m_margin)
+        return 0;
+      if(offset > boundary)
         group = g;
+    }
     const int apart = std::abs(group - m_own);
     return apart == 0 ? 1 : apart == 1 ? -1 : 0;
   }
 
 private:
   static constexpr double local_ratio = 3.5, global_ratio = 2.5;
+  // The share of half the gap between two sheets, on either side of the
+  // boundary, in which an offset is on neither for sure.
+  static constexpr double unsure_share = 0.2;
   // A sheet holds at least 2 offsets and an eighth of them: a few points
   // with wrong normals between two sheets are not one.
   static constexpr std::size_t min_points = 2;
@@ -148,6 +156,7 @@ private:
 
   int m_groups = 1;
   double m_means[3] = { 0, 0, 0 };
+  double m_margin = 0;
   int m_own = 0;
 };
 

@@ -37,9 +37,8 @@ public:
   /// The points are split between two planes (k-planes: from the split at
   /// the median offset along `axis`, each plane is fitted to its points by
   /// least squares and each point goes to the nearer, until nothing moves).
-  /// The points farther off both planes than 8 times the median are left
-  /// out, and the planes refitted to the rest (3 rounds). The split is a
-  /// wedge when each plane holds an eighth of the points left or more and
+  /// The split is a wedge when each plane holds an eighth of the points or
+  /// more and
   /// - the two planes explain the points far better than one: the deviation
   ///   from one plane is over 3 times that from the nearer of two;
   /// - they are stacked, as the two sides of a thin part: their points'
@@ -84,43 +83,20 @@ public:
       if(!moved)
         break;
     }
+    planes[0] = Plane(points, face, 0);
+    planes[1] = Plane(points, face, 1);
+    const std::size_t min_face = (std::max)(std::size_t(3), n / 8);
+    if(planes[0].size < min_face || planes[1].size < min_face)
+      return;
+    const std::vector<int> one_face(n, 0);
+    const Plane one(points, one_face, 0);
+    const double deviation_1 = std::sqrt(one.squared_deviation / double(n)),
+                 deviation_2 = std::sqrt((planes[0].squared_deviation + planes[1].squared_deviation) / double(n));
+    if(!(deviation_1 > separation * deviation_2))
+      return;
     double radius = 0;
     for(const Eigen::Vector3d& p : points)
       radius = (std::max)(radius, p.norm());
-    // Points far off both planes, such as outliers, would spoil the fits:
-    // they are left out (face -1), and the rest refitted.
-    std::vector<double> distances(n);
-    for(std::size_t t = 0; t < n; ++t)
-      distances[t] = (std::min)(planes[0].distance(points[t]), planes[1].distance(points[t]));
-    std::nth_element(distances.begin(), distances.begin() + std::ptrdiff_t(n / 2), distances.end());
-    const double far_off = (std::max)(max_distance * distances[n / 2], 1e-9 * radius);
-    std::size_t kept = 0;
-    for(std::size_t t = 0; t < n; ++t)
-    {
-      if((std::min)(planes[0].distance(points[t]), planes[1].distance(points[t])) > far_off)
-        face[t] = -1;
-      kept += face[t] >= 0;
-    }
-    for(int round = 0; round <= refit_rounds; ++round)
-    {
-      planes[0] = Plane(points, face, 0);
-      planes[1] = Plane(points, face, 1);
-      if(round < refit_rounds)
-        for(std::size_t t = 0; t < n; ++t)
-          if(face[t] >= 0)
-            face[t] = planes[0].distance(points[t]) <= planes[1].distance(points[t]) ? 0 : 1;
-    }
-    const std::size_t min_face = (std::max)(std::size_t(3), kept / 8);
-    if(planes[0].size < min_face || planes[1].size < min_face)
-      return;
-    std::vector<int> one_face(face);
-    for(int& f : one_face)
-      f = f >= 0 ? 0 : -1;
-    const Plane one(points, one_face, 0);
-    const double deviation_1 = std::sqrt(one.squared_deviation / double(kept)),
-                 deviation_2 = std::sqrt((planes[0].squared_deviation + planes[1].squared_deviation) / double(kept));
-    if(!(deviation_1 > separation * deviation_2))
-      return;
     const Eigen::Vector3d apart = planes[0].centroid - planes[1].centroid;
     if((apart - axis.dot(apart) * axis).norm() > max_side_by_side * radius)
       return;
@@ -134,7 +110,7 @@ public:
         if(face[t] == g)
           spread += (offsets[t] - mean) * (offsets[t] - mean);
     }
-    if(std::sqrt(spread / double(kept)) < min_tilt * deviation_2)
+    if(std::sqrt(spread / double(n)) < min_tilt * deviation_2)
       return;
     for(int g = 0; g < 2; ++g)
     {
@@ -163,8 +139,7 @@ public:
 
 private:
   static constexpr std::size_t min_points = 8;
-  static constexpr int max_rounds = 15, refit_rounds = 3;
-  static constexpr double max_distance = 8; // times the median distance to the nearer plane
+  static constexpr int max_rounds = 15;
   static constexpr double separation = 3, max_side_by_side = 0.5, min_tilt = 2;
   static constexpr double cos_facing = 0.95; // 18 degrees
 
