@@ -67,24 +67,27 @@ public:
     for(std::size_t t = 0; t < n; ++t)
       face[t] = offsets[t] > median;
     Plane planes[2];
-    for(int round = 0; round < max_rounds; ++round)
+    bool settled = false;
+    for(int round = 0; round < max_rounds && !settled; ++round)
     {
       planes[0] = Plane(points, face, 0);
       planes[1] = Plane(points, face, 1);
       if(planes[0].size < 3 || planes[1].size < 3)
         return;
-      bool moved = false;
+      settled = true;
       for(std::size_t t = 0; t < n; ++t)
       {
         const int nearer = planes[0].distance(points[t]) <= planes[1].distance(points[t]) ? 0 : 1;
-        moved = moved || nearer != face[t];
+        settled = settled && nearer == face[t];
         face[t] = nearer;
       }
-      if(!moved)
-        break;
     }
-    planes[0] = Plane(points, face, 0);
-    planes[1] = Plane(points, face, 1);
+    // Settled, the planes are already those of the faces.
+    if(!settled)
+    {
+      planes[0] = Plane(points, face, 0);
+      planes[1] = Plane(points, face, 1);
+    }
     const std::size_t min_face = (std::max)(std::size_t(3), n / 8);
     if(planes[0].size < min_face || planes[1].size < min_face)
       return;
