@@ -58,9 +58,12 @@ namespace CGAL {
    no evidence. Parallel faces are told apart by the offsets of the points
    along the normal; faces that meet at a small angle, such as the sides of
    a blade near its edge, which lie within the noise of each other's
-   tangent planes there, by two planes fitted to the points (a wedge). Such a pair weighs as much as the less supported of its two
-   normals, a normal's support being the square of the share of the point's
-   `k` nearest neighbors that lie on its tangent plane: normals that are not
+   tangent planes there, by two planes fitted to the points (a wedge),
+   outliers left out: a point is one where its nearest neighbors lie off its
+   tangent plane, far beyond the noise over the cloud. Such a pair weighs as
+   much as the less supported of its two normals, a normal's support being
+   the square of the share of the point's `k` nearest neighbors that lie on
+   its tangent plane: normals that are not
    the surface's, such as the faces' normals on the narrow rim of a plate,
    each on the plane of the next, would otherwise chain the two faces into
    one sheet and turn one of them over. Across a sharp edge, where that dot

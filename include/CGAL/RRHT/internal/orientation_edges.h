@@ -133,6 +133,11 @@ inline double signed_weight(const Eigen::Vector3d& d, const Eigen::Vector3d& ni,
 /// The number of neighbors whose offsets tell the sheets apart, at least.
 constexpr unsigned int sheet_neighbors = 48;
 
+/// A point is off the surface, an outlier, where the offset scale of its
+/// neighbors from its tangent plane is over these many times the noise over
+/// the cloud, and over this share of its neighborhood's radius.
+constexpr double off_surface_noises = 4, off_surface_radius = 0.05;
+
 /// The edges of the graph whose vertices are the points of `search` and
 /// whose edges join each point to its `k` nearest neighbors (once per
 /// pair), with their signed weights, in a fixed order whatever the number of
@@ -151,21 +156,27 @@ std::vector<Signed_edge> orientation_edges(const Neighbor_search& search, const 
   const unsigned int sheet_k =
     static_cast<unsigned int>((std::min<std::size_t>)((std::max)(k, sheet_neighbors), size - 1));
   // The neighbors of every point, k per point, their offset scales, and the
-  // offsets of the point and its sheet_k neighbors from its tangent plane.
+  // positions of those of its sheet_k nearest whose normals are parallel to
+  // its own (itself included).
   const std::size_t row = sheet_k + 1;
-  std::vector<std::uint32_t> neighbors(size * k);
-  std::vector<double> scales(size), offsets(size * row), spreads(size), radii(size);
+  std::vector<std::uint32_t> neighbors(size * k), parallel(size * row);
+  std::vector<double> scales(size), spreads(size), radii(size);
   std::vector<std::size_t> counts(size);
   std::vector<Eigen::Vector3d> axes(size);
-  std::vector<Wedge> wedges(size);
   areas.assign(size, 0.);
   struct Scratch
   {
     Neighborhood neighborhood;
     Neighbor_search::Scratch search;
     std::vector<double> work;
-    std::vector<std::size_t> parallel;
     std::vector<Eigen::Vector3d> displacements;
+  };
+  // The offsets along its axis of the point at position `i`'s parallel
+  // neighbors, in `work`.
+  auto parallel_offsets = [&](std::size_t i, std::vector<double>& work) {
+    work.clear();
+    for(std::size_t t = 0; t < counts[i]; ++t)
+      work.push_back(axes[i].dot(search.point(parallel[i * row + t]) - search.point(i)));
   };
   const std::function<bool(double)> no_callback;
   Progress no_progress(no_callback, size);
@@ -189,27 +200,20 @@ std::vector<Signed_edge> orientation_edges(const Neighbor_search& search, const 
       // The offsets are taken along the mean line of those normals, the
       // point's own included: steadier under noise than one normal, whose
       // tilt would spread each sheet's offsets over the neighborhood.
-      scratch.parallel.clear();
       Eigen::Vector3d axis = Eigen::Vector3d::Zero();
+      counts[i] = 0;
       for(std::size_t u = 0; u < (std::min)(positions.size(), row); ++u)
       {
         const double c = normals[i].dot(normals[positions[u]]);
         if(std::abs(c) > cos_parallel)
         {
-          scratch.parallel.push_back(u);
+          parallel[i * row + counts[i]++] = std::uint32_t(positions[u]);
           axis += c < 0 ? Eigen::Vector3d(-normals[positions[u]]) : normals[positions[u]];
         }
       }
       axes[i] = axis.squaredNorm() > 0 ? axis.normalized() : normals[i];
-      counts[i] = scratch.parallel.size();
-      for(std::size_t t = 0; t < counts[i]; ++t)
-        offsets[i * row + t] = axes[i].dot(scratch.neighborhood.points[scratch.parallel[t]]);
-      scratch.work.assign(offsets.begin() + std::ptrdiff_t(i * row), offsets.begin() + std::ptrdiff_t(i * row + counts[i]));
+      parallel_offsets(i, scratch.work);
       spreads[i] = Sheets::spread_within_sheets(scratch.work);
-      scratch.displacements.clear();
-      for(std::size_t u : scratch.parallel)
-        scratch.displacements.push_back(scratch.neighborhood.points[u]);
-      wedges[i] = Wedge(scratch.displacements, axes[i]);
       radii[i] = scratch.neighborhood.radius;
       const double radius = scratch.neighborhood.points[nearest - 1].norm();
       areas[i] = CGAL_PI * radius * radius / double(nearest);
@@ -223,14 +227,27 @@ std::vector<Signed_edge> orientation_edges(const Neighbor_search& search, const 
     return values[size / 2];
   };
   const double noise = (std::max)(median(spreads), 1e-3 * median(radii));
+  // An outlier, off the surface, has its nearest neighbors off its tangent
+  // plane, far beyond the noise; in a wedge's fit, it would pull the planes
+  // away from the faces.
+  auto off_surface = [&](std::size_t p) {
+    return scales[p] > off_surface_noises * noise && scales[p] > off_surface_radius * radii[p];
+  };
   std::vector<Sheets> sheets(size);
+  std::vector<Wedge> wedges(size);
   std::vector<double> support(size);
-  for_each_block<ConcurrencyTag>(size, no_progress, [] { return std::vector<double>(); },
-                                 [&](std::size_t begin, std::size_t end, std::vector<double>& work) {
+  for_each_block<ConcurrencyTag>(size, no_progress, [] { return Scratch(); },
+                                 [&](std::size_t begin, std::size_t end, Scratch& scratch) {
+    std::vector<double>& work = scratch.work;
     for(std::size_t i = begin; i < end; ++i)
     {
-      work.assign(offsets.begin() + std::ptrdiff_t(i * row), offsets.begin() + std::ptrdiff_t(i * row + counts[i]));
+      parallel_offsets(i, work);
       sheets[i] = Sheets(work, noise);
+      scratch.displacements.clear();
+      for(std::size_t t = 0; t < counts[i]; ++t)
+        if(!off_surface(parallel[i * row + t]))
+          scratch.displacements.push_back(search.point(parallel[i * row + t]) - search.point(i));
+      wedges[i] = Wedge(scratch.displacements, axes[i]);
       // Points within the noise of one plane are on one face.
       if(!(wedges[i].deviation() > noise))
         wedges[i] = Wedge();
