@@ -292,7 +292,7 @@ double share_disagreeing_with_neighbors(const Cloud& cloud, unsigned int k)
 /// child process; the normals of each estimator are computed once per cloud.
 struct Pipelines
 {
-  Estimator rrht_normals = rrht_defaults(rrht_k), jet_normals = jet(paper_k);
+  Estimator rrht_normals = rrht_default(rrht_k), jet_normals = jet(paper_k);
   Orientation rrht = rrht_orient(orient_k), mst = mst_orient(orient_k);
   std::string name(const Estimator& e, const Orientation& o) const { return e.name + " + " + o.name; }
 };

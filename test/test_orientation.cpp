@@ -122,12 +122,14 @@ TEST_CASE("Consistent orientation of a hollow box: the cavity's walls point into
 
 TEST_CASE("Consistent orientation of a noisy hollow box: walls 5 noise deviations thick", "[orientation]")
 {
-  // Walls 1% of the diagonal thick under 0.2% noise: about 0.6% of the
-  // points are carried nearer the other side of their wall than their own,
-  // and no orientation from the points alone can tell them; the cavity as a
-  // whole must not flip. At 50k points, with the default normals: on
-  // sparser clouds, whose neighborhoods reach farther than the walls are
-  // thick, patches of the cavity still flip (see the user manual).
+  // Walls 1% of the diagonal thick under 0.2% noise: 0.62% of the points
+  // are carried nearer the other side of their wall than their own, and no
+  // orientation from the points alone can tell them; the cavity as a whole
+  // must not flip, and a point past the middle of a wall goes to the side
+  // it is nearer, which leaves the others within half a point of that
+  // floor. At 50k points, with the default normals: on sparser clouds,
+  // whose neighborhoods reach farther than the walls are thick, patches of
+  // the cavity still flip (see the user manual).
   const double wall = 0.01 * 2 * std::sqrt(3.);
   Cloud cloud = hollow_box(50000, wall, 11);
   add_noise(cloud, 0.2, 47);
@@ -136,7 +138,7 @@ TEST_CASE("Consistent orientation of a noisy hollow box: walls 5 noise deviation
   const auto in_cavity = [&](const Sample& s) { return s.truth * (s.point - CGAL::ORIGIN) < 0; };
   REQUIRE(std::count_if(cloud.begin(), end, in_cavity) > 20000);
   CHECK(share_outward(cloud, end, in_cavity) >= 0.98);
-  CHECK(share_outward(cloud, end) >= 0.98);
+  CHECK(share_outward(cloud, end) >= 0.989);
 }
 
 TEST_CASE("Consistent orientation of thin machined parts: no flipped patch", "[orientation]")

@@ -47,18 +47,15 @@ public:
       if(!split.found)
         continue;
       bool apart = true;
-      double closest = 0;
       for(int g = 1; g < groups; ++g)
       {
         const double gap = split.means[g] - split.means[g - 1];
         apart = apart && gap > local_ratio * split.spread && gap > global_ratio * noise;
-        closest = (g == 1) ? gap : (std::min)(closest, gap);
       }
       if(!apart)
         continue;
       m_groups = groups;
       std::copy(split.means, split.means + 3, m_means);
-      m_margin = unsure_share * closest / 2;
       for(int g = 1; g < groups; ++g)
         if(std::abs(m_means[g]) < std::abs(m_means[m_own]))
           m_own = g;
@@ -79,28 +76,22 @@ public:
   bool several() const { return m_groups > 1; }
 
   /// +1 if a point at offset `offset` is on the point's own sheet, -1 if on
-  /// an adjacent one, 0 if it is too close to the boundary between two
-  /// sheets to tell or on a sheet farther away.
+  /// an adjacent one, 0 if on a sheet farther away. A point goes to the
+  /// sheet whose mean is nearer: where the noise carries a point past the
+  /// middle, it is nearer the other side than its own, and nothing in the
+  /// points can tell its side (the floor of the orientation).
   int side(double offset) const
   {
     int group = 0;
     for(int g = 1; g < m_groups; ++g)
-    {
-      const double boundary = (m_means[g - 1] + m_means[g]) / 2;
-      if(std::abs(offset - boundary) < m_margin)
-        return 0;
-      if(offset > boundary)
+      if(offset > (m_means[g - 1] + m_means[g]) / 2)
         group = g;
-    }
     const int apart = std::abs(group - m_own);
     return apart == 0 ? 1 : apart == 1 ? -1 : 0;
   }
 
 private:
   static constexpr double local_ratio = 3.5, global_ratio = 2.5;
-  // The share of half the gap between two sheets, on either side of the
-  // boundary, in which an offset is on neither for sure.
-  static constexpr double unsure_share = 0.2;
   // A sheet holds at least 2 offsets and an eighth of them: a few points
   // with wrong normals between two sheets are not one.
   static constexpr std::size_t min_points = 2;
@@ -156,7 +147,6 @@ private:
 
   int m_groups = 1;
   double m_means[3] = { 0, 0, 0 };
-  double m_margin = 0;
   int m_own = 0;
 };
 
