@@ -14,7 +14,9 @@
 // knife edges, under noise), the points alone cannot always tell which side
 // a point is on. Some of their normals come out
 // inward there, and Poisson grows a spurious sheet from each such patch.
-// The user manual's "Known limits" of the orientation says how much.
+// Fins and gaps a couple of neighbor spacings wide get poor normals even
+// without noise, and a few such patches. The user manual's "Known limits"
+// of the orientation says how much.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/rrht_estimate_normals.h>
