@@ -65,6 +65,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -396,10 +399,76 @@ std::string poisson(const std::vector<Point_with_normal>& points, double spacing
   return std::string();
 }
 
+/// poisson() in a process of its own (this program, `--reconstruct`), the
+/// points and the surface passed through files in `folder`: CGAL's surface
+/// mesher orders its work by the addresses of its cells, so in this process
+/// the surface from the same normals would depend on what ran before it.
+/// Returns why it failed, or an empty string.
+std::string poisson_apart(const std::vector<Point_with_normal>& points, double spacing, const std::string& folder,
+                          Mesh& mesh)
+{
+  const std::string input = folder + "/reconstruct.bin", output = folder + "/reconstruct.off",
+                    failure = output + ".failure";
+  {
+    std::ofstream out(input, std::ios::binary);
+    const double header[2] = { double(points.size()), spacing };
+    out.write(reinterpret_cast<const char*>(header), sizeof header);
+    for(const Point_with_normal& p : points)
+    {
+      const double v[6] = { p.first.x(), p.first.y(), p.first.z(), p.second.x(), p.second.y(), p.second.z() };
+      out.write(reinterpret_cast<const char*>(v), sizeof v);
+    }
+    if(!out)
+      return "cannot write " + input;
+  }
+  std::remove(output.c_str());
+  std::remove(failure.c_str());
+  const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
+  const int status = std::system(("'" + self + "' --reconstruct '" + input + "' '" + output + "'").c_str());
+  std::remove(input.c_str());
+  std::string message;
+  if(std::ifstream in{ failure })
+    std::getline(in, message);
+  else if(status != 0)
+    message = "the reconstruction ended abnormally (status " + std::to_string(status) + ")";
+  else if(!CGAL::IO::read_polygon_mesh(output, mesh))
+    message = "cannot read " + output;
+  std::remove(output.c_str());
+  std::remove(failure.c_str());
+  return message;
+}
+
+/// The child of poisson_apart(): reconstructs the points of `input` into
+/// `output` (vertices to the last bit), or writes why it failed into
+/// `output`.failure.
+int reconstruct(const std::string& input, const std::string& output)
+{
+  std::ifstream in(input, std::ios::binary);
+  double header[2];
+  if(!in.read(reinterpret_cast<char*>(header), sizeof header))
+    return 1;
+  std::vector<Point_with_normal> points(static_cast<std::size_t>(header[0]));
+  for(Point_with_normal& p : points)
+  {
+    double v[6];
+    if(!in.read(reinterpret_cast<char*>(v), sizeof v))
+      return 1;
+    p = { Point(v[0], v[1], v[2]), Vector(v[3], v[4], v[5]) };
+  }
+  Mesh mesh;
+  const std::string failure = poisson(points, header[1], mesh);
+  if(!failure.empty())
+    return std::ofstream(output + ".failure") << failure << '\n' ? 0 : 1;
+  return CGAL::IO::write_polygon_mesh(output, mesh, CGAL::parameters::stream_precision(17)) ? 0 : 1;
+}
+
 /// Distances from a uniform sample of `from` to `to`, in % of `diagonal`:
 /// the mean and the 99th percentile.
 std::pair<double, double> distances(const Mesh& from, const Face_tree& to, double diagonal)
 {
+  // The sampler draws from CGAL's default random generator too, whose seed
+  // is the time.
+  CGAL::get_default_random() = CGAL::Random(1);
   std::vector<Point> sample;
   PMP::sample_triangle_mesh(from, std::back_inserter(sample),
                             CGAL::parameters::number_of_points_on_faces(samples)
@@ -616,7 +685,9 @@ int main(int argc, char** argv)
     ("points", po::value<std::size_t>()->default_value(100000), "points per cloud")
     ("noise", po::value<std::string>()->default_value("0,0.2"),
      "comma-separated noise levels, in % of the bounding-box diagonal")
-    ("threads", po::value<unsigned int>()->default_value(2), "threads of the estimations and orientations");
+    ("threads", po::value<unsigned int>()->default_value(2), "threads of the estimations and orientations")
+    ("reconstruct", po::value<std::vector<std::string> >()->multitoken(),
+     "INPUT OUTPUT: reconstruct the points of INPUT into OUTPUT, for the benchmark itself");
   po::variables_map vm;
   try
   {
@@ -626,6 +697,11 @@ int main(int argc, char** argv)
       std::cout << options << std::endl;
       return 0;
     }
+    if(vm.count("reconstruct"))
+    {
+      const std::vector<std::string> files = vm["reconstruct"].as<std::vector<std::string> >();
+      return files.size() == 2 ? reconstruct(files[0], files[1]) : 2;
+    }
     po::notify(vm);
   }
   catch(const std::exception& e)
@@ -634,6 +710,7 @@ int main(int argc, char** argv)
     return 2;
   }
   const std::string out = vm["out"].as<std::string>(), scratch = vm["scratch"].as<std::string>();
+  const std::string work = scratch.empty() ? out : scratch; // poisson_apart()'s files
   tbb::global_control threads(tbb::global_control::max_allowed_parallelism, vm["threads"].as<unsigned int>());
 
   std::ofstream csv(out + "/poisson.csv"), md(out + "/poisson.md");
@@ -695,7 +772,7 @@ int main(int argc, char** argv)
           CGAL::Real_timer timer;
           timer.start();
           Mesh mesh;
-          const std::string failure = poisson(points, spacing, mesh);
+          const std::string failure = poisson_apart(points, spacing, work, mesh);
           timer.stop();
           csv << shape.name << ',' << noise << ',' << cloud.size() << ',' << name(which) << ',' << dropped << ','
               << flipped << ',' << normals_s << ',' << timer.time() << ',';
