@@ -400,9 +400,9 @@ std::string poisson(const std::vector<Point_with_normal>& points, double spacing
 }
 
 /// poisson() in a process of its own (this program, `--reconstruct`), the
-/// points and the surface passed through files in `folder`: CGAL's surface
-/// mesher orders its work by the addresses of its cells, so in this process
-/// the surface from the same normals would depend on what ran before it.
+/// points and the surface passed through files in `folder`: run after other
+/// work in this process, CGAL's surface mesher made other surfaces from the
+/// same normals.
 /// Returns why it failed, or an empty string.
 std::string poisson_apart(const std::vector<Point_with_normal>& points, double spacing, const std::string& folder,
                           Mesh& mesh)
