@@ -91,6 +91,15 @@ struct Least_squares_first_thresholds
   /// quadric are not bimodal.
   static constexpr double near_share = 0.25;
   static constexpr double near_turn = 10;
+  /// Where those nearest neighbors already reach the next sheet of a stack
+  /// (fins as far apart as half the radius), the `stack_nearest` nearest
+  /// do not: along their normal, the point's own sheet is the run of
+  /// offsets unbroken by a gap of `stack_gap` times the radius, if it
+  /// leaves out at least `stacked_others` of the neighbors
+  /// (`own_stacked_sheet()`).
+  static constexpr std::size_t stack_nearest = 10;
+  static constexpr double stack_gap = 0.1;
+  static constexpr double stacked_others = 0.1;
 };
 
 /// Jet fitting's quadric at a point: its normal, and its residuals' root
@@ -181,6 +190,55 @@ inline bool own_sheet(const std::vector<Eigen::Vector3d>& points, const Eigen::V
   return true;
 }
 
+/// The neighbors `points` (relative to the point, within `radius`) on the
+/// point's own sheet, in `own`, where they hold a stack of parallel sheets
+/// normal to `normal` (fins, or the walls of narrow slots) that two groups
+/// cannot describe: the run of their offsets about the point's, 0,
+/// unbroken by a gap of `stack_gap` times the radius, and set apart from
+/// the rest by more than `sheets_apart` times its spread. False where no
+/// such run leaves out another sheet.
+inline bool own_stacked_sheet(const std::vector<Eigen::Vector3d>& points, double radius, const Eigen::Vector3d& normal,
+                              std::vector<Eigen::Vector3d>& own, std::vector<double>& offsets)
+{
+  typedef Least_squares_first_thresholds T;
+  const std::size_t size = points.size();
+  if(size < T::least_for_sheets)
+    return false;
+  offsets.resize(size);
+  for(std::size_t i = 0; i < size; ++i)
+    offsets[i] = normal.dot(points[i]);
+  std::sort(offsets.begin(), offsets.end());
+  const std::size_t at =
+    (std::min)(std::size_t(std::lower_bound(offsets.begin(), offsets.end(), 0.) - offsets.begin()), size - 1);
+  const double gap = T::stack_gap * radius;
+  std::size_t first = at, last = at + 1;
+  while(first > 0 && offsets[first] - offsets[first - 1] <= gap)
+    --first;
+  while(last < size && offsets[last] - offsets[last - 1] <= gap)
+    ++last;
+  const std::size_t run = last - first;
+  if(run < T::least_for_sheets / 2 || double(size - run) < T::stacked_others * double(size))
+    return false;
+  double s = 0, q = 0;
+  for(std::size_t i = first; i < last; ++i)
+    s += offsets[i], q += offsets[i] * offsets[i];
+  const double mean = s / double(run), spread = std::sqrt((std::max)(0., q - s * mean) / double(run - 1));
+  // The nearer of the gaps on either side; the run may reach one end.
+  const double apart = (std::min)(first > 0 ? offsets[first] - offsets[first - 1] : radius,
+                                  last < size ? offsets[last] - offsets[last - 1] : radius);
+  if(!(apart > T::sheets_apart * spread))
+    return false;
+  const double low = offsets[first], high = offsets[last - 1];
+  own.clear();
+  for(const Eigen::Vector3d& p : points)
+  {
+    const double o = normal.dot(p);
+    if(o >= low && o <= high)
+      own.push_back(p);
+  }
+  return true;
+}
+
 /// The quadric of the point's own sheet (`fit_quadric()`), where its
 /// neighbors `points` (relative to it, within `radius`) hold two along
 /// `normal` (`own_sheet()`), the sheet's points in `scratch.own`; a fit
@@ -196,11 +254,13 @@ inline Quadric_fit fit_own_sheet(const std::vector<Eigen::Vector3d>& points, dou
 
 /// The quadric `fit` of the neighbors `points` (relative to the point,
 /// nearest first, within `radius`), or, where they hold the two sides of a
-/// thin part, that of the point's own side (`fit_own_sheet()`), so that its
-/// noise, which its neighbors' tests read, is not the gap between the sides.
-/// The sides are split along the quadric's normal where its residuals are
-/// bimodal (the quadric lies between them), else along the principal normal
-/// of the nearest neighbors where the quadric turned away from it.
+/// thin part or a stack of sheets, that of the point's own sheet
+/// (`fit_own_sheet()`, `own_stacked_sheet()`), so that its noise, which its
+/// neighbors' tests read, is not the gap between the sheets. The sides are
+/// split along the quadric's normal where its residuals are bimodal (the
+/// quadric lies between them), else along the principal normal of the
+/// nearest neighbors where the quadric turned away from it, and a stack
+/// along that of the few nearest.
 inline Quadric_fit fit_point_side(const std::vector<Eigen::Vector3d>& points, double radius, const Quadric_fit& fit,
                                   Refit_scratch& scratch)
 {
@@ -213,7 +273,21 @@ inline Quadric_fit fit_point_side(const std::vector<Eigen::Vector3d>& points, do
     const std::size_t nearest = std::size_t(T::near_share * double(points.size()));
     const Eigen::Vector3d near = principal_normal(points, [&](std::size_t j) { return j < nearest; });
     if(!within_angle(near, fit.normal, T::near_turn))
+    {
       own = fit_own_sheet(points, radius, near, scratch);
+      if(own.normal == Eigen::Vector3d::Zero())
+      {
+        for(std::size_t few : { T::stack_nearest, std::size_t(6) })
+        {
+          const Eigen::Vector3d nearer = principal_normal(points, [&](std::size_t j) { return j < few; });
+          if(own_stacked_sheet(points, radius, nearer, scratch.own, scratch.work))
+          {
+            own = fit_quadric(scratch.own, radius, scratch);
+            break;
+          }
+        }
+      }
+    }
   }
   return own.normal != Eigen::Vector3d::Zero() ? own : fit;
 }
