@@ -26,19 +26,22 @@ extra=(python3-matplotlib) # report.py's plots, poisson_pictures.py's pictures
 [ "${RRHT_BENCHMARK_OPEN3D:-0}" = 1 ] && extra+=(libopen3d-dev)
 bash "$root/scripts/install_dependencies.sh" "${extra[@]}"
 
+# The commit the results are of: taken before the build, so that an edit
+# made while the benchmark builds or runs does not mark it dirty.
+commit=$(git -C "$root" describe --always --dirty 2>/dev/null || echo unknown)
 build="$root/build/benchmark"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCGAL_RRHT_BUILD_BENCHMARKS=ON \
       -DCGAL_RRHT_BUILD_TESTS=OFF -DCGAL_RRHT_BUILD_EXAMPLES=OFF > /dev/null
 cmake --build "$build" -j"$(nproc)" --target "$program"
 
-commit=$(git -C "$root" describe --always --dirty 2>/dev/null || echo unknown) # before the old results go
 results=${RRHT_BENCHMARK_RESULTS:-$mode}
 out="$root/benchmark/results/$results"
 scratch="$build/errors-${results//\//-}"
 rm -rf "$out" "$scratch"
 mkdir -p "$out" "$scratch"
 {
-  echo "Command: \`${RRHT_BENCHMARK_RESULTS:+RRHT_BENCHMARK_RESULTS=$results }bash scripts/benchmark.sh $mode${*:+ $*}\` at commit $commit, $(date -u '+%Y-%m-%d %H:%M UTC')."
+  peers="${RRHT_BENCHMARK_PCL:+RRHT_BENCHMARK_PCL=$RRHT_BENCHMARK_PCL }${RRHT_BENCHMARK_OPEN3D:+RRHT_BENCHMARK_OPEN3D=$RRHT_BENCHMARK_OPEN3D }"
+  echo "Command: \`$peers${RRHT_BENCHMARK_RESULTS:+RRHT_BENCHMARK_RESULTS=$results }bash scripts/benchmark.sh $mode${*:+ $*}\` at commit $commit, $(date -u '+%Y-%m-%d %H:%M UTC')."
   echo "Machine: $(lscpu | sed -n 's/^Model name: *//p' | head -1), $(nproc) cores, $(free -g | awk '/^Mem:/ {print $2}') GiB;" \
        "$(g++ --version | head -1); CGAL $(dpkg-query -W -f='${Version}' libcgal-dev);" \
        "PCL: $(dpkg-query -W -f='${Version}' libpcl-dev 2>/dev/null || echo 'not installed');" \

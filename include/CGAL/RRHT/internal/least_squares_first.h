@@ -153,6 +153,28 @@ inline Quadric_fit fit_quadric(const std::vector<Eigen::Vector3d>& points, doubl
                       radius * noise_of_residuals(residuals, scratch.work) * std::sqrt(double(size) / freedom) };
 }
 
+/// The offsets of the neighbors `points` (relative to the point) along
+/// `normal`, sorted, in `offsets`.
+inline void sorted_offsets(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& normal,
+                           std::vector<double>& offsets)
+{
+  offsets.resize(points.size());
+  for(std::size_t i = 0; i < points.size(); ++i)
+    offsets[i] = normal.dot(points[i]);
+  std::sort(offsets.begin(), offsets.end());
+}
+
+/// The mean of `offsets` [first, last) and their standard deviation (0 for
+/// a single one).
+inline std::pair<double, double> mean_and_spread(const std::vector<double>& offsets, std::size_t first, std::size_t last)
+{
+  double s = 0, q = 0;
+  for(std::size_t i = first; i < last; ++i)
+    s += offsets[i], q += offsets[i] * offsets[i];
+  const double n = double(last - first), mean = s / n;
+  return std::make_pair(mean, n > 1 ? std::sqrt((std::max)(0., q - s * mean) / (n - 1)) : 0.);
+}
+
 /// The neighbors `points` (relative to the point) on the point's own sheet,
 /// in `own`, where they hold a second sheet along `normal`
 /// (`Least_squares_first_thresholds::sheets_apart`), found by the split of
@@ -165,21 +187,11 @@ inline bool own_sheet(const std::vector<Eigen::Vector3d>& points, const Eigen::V
   const std::size_t size = points.size();
   if(size < Least_squares_first_thresholds::least_for_sheets)
     return false;
-  offsets.resize(size);
-  for(std::size_t i = 0; i < size; ++i)
-    offsets[i] = normal.dot(points[i]);
-  std::sort(offsets.begin(), offsets.end());
+  sorted_offsets(points, normal, offsets);
   const std::size_t at = split_in_two(offsets);
   // Each group is a sheet: both spreads, not only their pool, are small
   // beside the gap, unlike the strip of another face across an edge.
-  auto mean_and_spread = [&](std::size_t first, std::size_t last) {
-    double s = 0, q = 0;
-    for(std::size_t i = first; i < last; ++i)
-      s += offsets[i], q += offsets[i] * offsets[i];
-    const double n = double(last - first), mean = s / n;
-    return std::make_pair(mean, n > 1 ? std::sqrt((std::max)(0., q - s * mean) / (n - 1)) : 0.);
-  };
-  const std::pair<double, double> low = mean_and_spread(0, at), high = mean_and_spread(at, size);
+  const std::pair<double, double> low = mean_and_spread(offsets, 0, at), high = mean_and_spread(offsets, at, size);
   if(!(high.first - low.first > Least_squares_first_thresholds::sheets_apart * (std::max)(low.second, high.second)))
     return false;
   const double split = 0.5 * (offsets[at - 1] + offsets[at]);
@@ -204,10 +216,7 @@ inline bool own_stacked_sheet(const std::vector<Eigen::Vector3d>& points, double
   const std::size_t size = points.size();
   if(size < T::least_for_sheets)
     return false;
-  offsets.resize(size);
-  for(std::size_t i = 0; i < size; ++i)
-    offsets[i] = normal.dot(points[i]);
-  std::sort(offsets.begin(), offsets.end());
+  sorted_offsets(points, normal, offsets);
   const std::size_t at =
     (std::min)(std::size_t(std::lower_bound(offsets.begin(), offsets.end(), 0.) - offsets.begin()), size - 1);
   const double gap = T::stack_gap * radius;
@@ -219,10 +228,7 @@ inline bool own_stacked_sheet(const std::vector<Eigen::Vector3d>& points, double
   const std::size_t run = last - first;
   if(run < T::least_for_sheets / 2 || double(size - run) < T::stacked_others * double(size))
     return false;
-  double s = 0, q = 0;
-  for(std::size_t i = first; i < last; ++i)
-    s += offsets[i], q += offsets[i] * offsets[i];
-  const double mean = s / double(run), spread = std::sqrt((std::max)(0., q - s * mean) / double(run - 1));
+  const double spread = mean_and_spread(offsets, first, last).second;
   // The nearer of the gaps on either side; the run may reach one end.
   const double apart = (std::min)(first > 0 ? offsets[first] - offsets[first - 1] : radius,
                                   last < size ? offsets[last] - offsets[last - 1] : radius);
