@@ -587,6 +587,22 @@ TEST_CASE("Least squares first: a thin box whose sides are within the noise, bet
   CHECK(e.first.share_above < 0.5 * e.defaults.share_above);
 }
 
+namespace {
+// Appends `count` points of the plane z = height in the unit ball, their
+// heights drawn from `noise` where one is given.
+void add_sheet(std::vector<Eigen::Vector3d>& points, std::size_t count, double height, std::mt19937_64& generator,
+               std::normal_distribution<double>* noise = nullptr)
+{
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  while(count > 0)
+  {
+    const Eigen::Vector3d p(uniform(generator), uniform(generator), height + (noise ? (*noise)(generator) : 0.));
+    if(p.squaredNorm() <= 1)
+      points.push_back(p), --count;
+  }
+}
+} // namespace
+
 TEST_CASE("Least squares first: the sides of a thin part are told apart, the strip of another face is not one",
           "[accuracy][least-squares-first]")
 {
@@ -597,16 +613,11 @@ TEST_CASE("Least squares first: the sides of a thin part are told apart, the str
   const Eigen::Vector3d up(0, 0, 1);
   std::vector<Eigen::Vector3d> own;
   std::vector<double> work;
-  // `count` points of the plane z = height in the unit ball, noisy, the point itself at the origin first.
+  // `count` noisy points of the plane z = height, the point itself at the origin first.
   auto sheet = [&](std::vector<Eigen::Vector3d>& points, std::size_t count, double height) {
     if(points.empty())
       points.emplace_back(Eigen::Vector3d::Zero());
-    while(count > 0)
-    {
-      const Eigen::Vector3d p(uniform(generator), uniform(generator), height + noise(generator));
-      if(p.squaredNorm() <= 1)
-        points.push_back(p), --count;
-    }
+    add_sheet(points, count, height, generator, &noise);
   };
   auto on_own_side = [&](const std::vector<Eigen::Vector3d>& points) {
     std::size_t near = 0;
@@ -681,19 +692,12 @@ TEST_CASE("Least squares first: in a stack of sheets, the point's own is told ap
 {
   using CGAL::RRHT::internal::own_stacked_sheet;
   std::mt19937_64 generator(9);
-  std::uniform_real_distribution<double> uniform(-1, 1);
   const Eigen::Vector3d up(0, 0, 1);
   std::vector<Eigen::Vector3d> own;
   std::vector<double> work;
-  // `count` points of the plane z = height in the unit ball with noise `deviation`.
   auto sheet = [&](std::vector<Eigen::Vector3d>& points, std::size_t count, double height, double deviation) {
     std::normal_distribution<double> noise(0, deviation);
-    while(count > 0)
-    {
-      const Eigen::Vector3d p(uniform(generator), uniform(generator), height + (deviation > 0 ? noise(generator) : 0.));
-      if(p.squaredNorm() <= 1)
-        points.push_back(p), --count;
-    }
+    add_sheet(points, count, height, generator, deviation > 0 ? &noise : nullptr);
   };
   SECTION("five sheets half the radius apart, the point on the middle one")
   {

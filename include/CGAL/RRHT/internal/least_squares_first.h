@@ -96,8 +96,11 @@ struct Least_squares_first_thresholds
   /// do not: along their normal, the point's own sheet is the run of
   /// offsets unbroken by a gap of `stack_gap` times the radius, if it
   /// leaves out at least `stacked_others` of the neighbors
-  /// (`own_stacked_sheet()`).
+  /// (`own_stacked_sheet()`). Where fewer points sample the fins, the
+  /// `stack_fewest` nearest are tried next: the fewest that still span a
+  /// plane with some room for noise.
   static constexpr std::size_t stack_nearest = 10;
+  static constexpr std::size_t stack_fewest = 6;
   static constexpr double stack_gap = 0.1;
   static constexpr double stacked_others = 0.1;
 };
@@ -283,7 +286,7 @@ inline Quadric_fit fit_point_side(const std::vector<Eigen::Vector3d>& points, do
       own = fit_own_sheet(points, radius, near, scratch);
       if(own.normal == Eigen::Vector3d::Zero())
       {
-        for(std::size_t few : { T::stack_nearest, std::size_t(6) })
+        for(std::size_t few : { T::stack_nearest, T::stack_fewest })
         {
           const Eigen::Vector3d nearer = principal_normal(points, [&](std::size_t j) { return j < few; });
           if(own_stacked_sheet(points, radius, nearer, scratch.own, scratch.work))
