@@ -3,8 +3,9 @@
 //
 // The Poisson experiment (README.md here, "Poisson surfaces"): how close
 // CGAL's Poisson surface comes to the true surface when its normals are
-// RRHT's defaults oriented by CGAL::rrht_orient_normals(), jet fitting's
-// oriented by CGAL::mst_orient_normals(), or the exact normals. Writes
+// RRHT's defaults oriented by CGAL::rrht_orient_normals() or given the exact
+// normals' signs, jet fitting's oriented by CGAL::mst_orient_normals(), or the
+// exact normals. Writes
 // poisson.csv and poisson.md into --out, the surfaces into --scratch.
 
 #include "datasets.h"
@@ -300,35 +301,51 @@ std::size_t closed_blade_sides(double max_error)
   return (std::max)(std::size_t(16), std::size_t(std::ceil(2 * std::sqrt(a / (4 * max_error)))));
 }
 
-/// One normal set fed to Poisson.
-enum class Normals { RRHT, JET, EXACT };
-const char* name(Normals n) { return n == Normals::RRHT ? "rrht_orient" : n == Normals::JET ? "jet_mst" : "exact"; }
+/// One normal set fed to Poisson. RRHT_SIGNED is RRHT's unoriented normals,
+/// each given the sign of the exact normal: what the surface would be with
+/// an orientation that makes no mistake, so that the orientation's part and
+/// the normals' part of a surface's error are told apart.
+enum class Normals { RRHT, RRHT_SIGNED, JET, EXACT };
+const char* name(Normals n)
+{
+  return n == Normals::RRHT ? "rrht_orient" : n == Normals::RRHT_SIGNED ? "rrht_exact_signs" : n == Normals::JET ? "jet_mst" : "exact";
+}
 const char* label(Normals n)
 {
-  return n == Normals::RRHT ? "RRHT defaults (K = 100) + `rrht_orient_normals` (k = 18)"
-         : n == Normals::JET ? "jet fitting (K = 18) + `mst_orient_normals` (k = 18)"
-                             : "exact normals";
+  return n == Normals::RRHT          ? "RRHT defaults (K = 100) + `rrht_orient_normals` (k = 18)"
+         : n == Normals::RRHT_SIGNED ? "RRHT defaults (K = 100), the exact normals' signs"
+         : n == Normals::JET         ? "jet fitting (K = 18) + `mst_orient_normals` (k = 18)"
+                                     : "exact normals";
 }
 
-/// Estimates and orients the normals; returns how many points were dropped
-/// (not oriented) and the seconds taken.
-std::pair<std::size_t, double> normals(Normals which, std::vector<Point_with_normal>& points)
+/// Estimates and orients the normals of `points`, the points of `cloud` in
+/// its order; returns how many points were dropped (not oriented) and the
+/// seconds taken.
+std::pair<std::size_t, double> normals(Normals which, std::vector<Point_with_normal>& points,
+                                       const rrht_test::Cloud& cloud)
 {
   const auto maps = CGAL::RRHT::parameters::point_map(Point_map()).normal_map(Normal_map());
   const std::size_t before = points.size();
   CGAL::Real_timer timer;
   timer.start();
-  if(which == Normals::RRHT)
-  {
+  if(which == Normals::RRHT || which == Normals::RRHT_SIGNED)
     CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(points, 100, maps);
+  if(which == Normals::RRHT)
     points.erase(CGAL::rrht_orient_normals<CGAL::Parallel_if_available_tag>(points, 18, maps), points.end());
-  }
   else if(which == Normals::JET)
   {
     CGAL::jet_estimate_normals<CGAL::Parallel_if_available_tag>(points, 18, maps);
     points.erase(CGAL::mst_orient_normals(points, 18, maps), points.end());
   }
   timer.stop();
+  // The estimation keeps the points in their order.
+  if(which == Normals::RRHT_SIGNED)
+    for(std::size_t i = 0; i < points.size(); ++i)
+    {
+      const rrht_test::Vector& truth = cloud[i].truth;
+      if(points[i].second * Vector(truth.x(), truth.y(), truth.z()) < 0)
+        points[i].second = -points[i].second;
+    }
   return { before - points.size(), timer.time() };
 }
 
@@ -671,7 +688,7 @@ std::vector<std::string> split(const std::string& list)
 
 int main(int argc, char** argv)
 {
-  po::options_description options("poisson_benchmark: Poisson surfaces from three sets of normals against the true "
+  po::options_description options("poisson_benchmark: Poisson surfaces from four sets of normals against the true "
                                   "surfaces (benchmark/README.md)");
   options.add_options()("help", "this help")
     ("data", po::value<std::string>()->default_value("../shared/data"), "the shared data folder (MANIFEST.md)")
@@ -724,7 +741,7 @@ int main(int argc, char** argv)
          "near_edge_area_percent,near_edge_mean_deg,near_edge_above10_percent,elsewhere_mean_deg,message\n";
   md << "# Poisson surfaces against the true surfaces\n\n"
         "CGAL's Poisson reconstruction (the parameters of `poisson_surface_reconstruction_delaunay()`, average "
-        "spacing of 6 neighbors, through the checks of `examples/rrht_pipeline_example.cpp`) from three sets of "
+        "spacing of 6 neighbors, through the checks of `examples/rrht_pipeline_example.cpp`) from four sets of "
         "oriented normals. Distances in % of the true mesh's bounding-box diagonal, over "
         << samples
         << " points sampled uniformly on each surface: *to true* from the reconstructed surface to the true "
@@ -757,7 +774,7 @@ int main(int argc, char** argv)
            << "| normals | dropped | flipped % | to true: mean % | p99 % | from true: mean % | p99 % "
               "| near edges: mean ° | > 10° (area %) | elsewhere: mean ° | faces | normals s | Poisson s |\n"
            << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-        for(Normals which : { Normals::RRHT, Normals::JET, Normals::EXACT })
+        for(Normals which : { Normals::RRHT, Normals::RRHT_SIGNED, Normals::JET, Normals::EXACT })
         {
           std::vector<Point_with_normal> points;
           for(const rrht_test::Sample& s : cloud)
@@ -766,7 +783,7 @@ int main(int argc, char** argv)
                                                         : CGAL::NULL_VECTOR);
           const double spacing = CGAL::compute_average_spacing<CGAL::Parallel_if_available_tag>(
             points, 6, CGAL::parameters::point_map(Point_map()));
-          const auto [dropped, normals_s] = normals(which, points);
+          const auto [dropped, normals_s] = normals(which, points, cloud);
           const double flipped = flipped_percent(points, cloud);
           std::cout << shape.name << ", noise " << noise << "%, " << name(which) << ": " << std::flush;
           CGAL::Real_timer timer;

@@ -2,7 +2,7 @@
 # Copyright (c) 2026 The CGAL RRHT authors.
 # SPDX-License-Identifier: GPL-3.0-or-later
 """Pictures of the Poisson surfaces of poisson_benchmark: for each shape and
-noise of poisson.csv, the surfaces from the three sets of normals side by
+noise of poisson.csv, the surfaces from the four sets of normals side by
 side, shaded by their face normals, and a link to the picture under the
 shape's table in poisson.md.
 
@@ -26,6 +26,7 @@ import numpy as np  # noqa: E402
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
 
 NORMALS = [("rrht_orient", "RRHT + rrht_orient_normals"),
+           ("rrht_exact_signs", "RRHT, the exact signs"),
            ("jet_mst", "jet fitting + mst_orient_normals"),
            ("exact", "exact normals")]
 LIGHT = np.array([0.4, -0.5, 0.77])
@@ -89,9 +90,9 @@ def main():
     with open(md_path) as f:
         md = f.read()
     for shape, noise in cases:
-        fig = plt.figure(figsize=(12, 4.2))
+        fig = plt.figure(figsize=(4 * len(NORMALS), 4.2))
         for i, (normals, label) in enumerate(NORMALS):
-            ax = fig.add_subplot(1, 3, i + 1, projection="3d")
+            ax = fig.add_subplot(1, len(NORMALS), i + 1, projection="3d")
             path = os.path.join(args.scratch, "%s_noise%s_%s.off" % (shape, noise, normals))
             if os.path.exists(path):
                 vertices, triangles = read_off(path)

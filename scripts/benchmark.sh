@@ -8,7 +8,7 @@
 #
 # RRHT_BENCHMARK_RESULTS=NAME writes to benchmark/results/NAME instead.
 # poisson: the Poisson surfaces against the true meshes (poisson_benchmark,
-# about 20 minutes) and their pictures, into benchmark/results/poisson.
+# about 30 minutes) and their pictures, into benchmark/results/poisson.
 #
 # quick takes minutes, full hours. PCL and Open3D are compared too when
 # Debian's libpcl-dev and libopen3d-dev are installed (RRHT_BENCHMARK_PCL=1
