@@ -308,7 +308,10 @@ std::size_t closed_blade_sides(double max_error)
 enum class Normals { RRHT, RRHT_SIGNED, JET, EXACT };
 const char* name(Normals n)
 {
-  return n == Normals::RRHT ? "rrht_orient" : n == Normals::RRHT_SIGNED ? "rrht_exact_signs" : n == Normals::JET ? "jet_mst" : "exact";
+  return n == Normals::RRHT          ? "rrht_orient"
+         : n == Normals::RRHT_SIGNED ? "rrht_exact_signs"
+         : n == Normals::JET         ? "jet_mst"
+                                     : "exact";
 }
 const char* label(Normals n)
 {
