@@ -345,6 +345,7 @@ enum class Cloud_kind
   MIXED,  // sharp edges and fillets
   SMOOTH, // smooth or filleted
   THIN,   // the two sides of a thin part in one neighborhood
+  DENSE,  // many features at or below the neighborhood's size
   OTHER   // the cube with 1% noise
 };
 
@@ -386,6 +387,26 @@ void for_each_design_cloud(const Config& config, Visit visit)
   visit(with_noise("thin_box_t2%", thin_box(sparse, 0.02 * std::sqrt(8.), 1), 0.2, 1), Cloud_kind::THIN, none);
   visit(with_noise("bent_sheet_t2%", bent_sheet(sparse, 0.02 * std::sqrt(6.), 2), 0.2, 2), Cloud_kind::THIN, none);
   visit(with_noise("filleted_plate", filleted_plate(sparse, 0.05, 0.1, 62), 0.2, 62), Cloud_kind::SMOOTH, none);
+}
+
+/// Calls `visit(dataset)` on the feature-dense parts (100k points, clean and
+/// with 0.2% noise): the spur gear (24 teeth), the block drilled with bores
+/// of several diameters and the finned part, whose fins and gaps are half
+/// the neighborhood's radius; the shapes of the orientation experiment.
+template <typename Visit>
+void for_each_feature_dense_cloud(Visit visit)
+{
+  const std::size_t n = 100000;
+  for(double noise : { 0., 0.2 })
+  {
+    visit(synthetic("gear", [](std::size_t m, unsigned int seed) {
+      return solid_boundary(machined_part_solid("gear"), m, seed);
+    }, n, noise, 55));
+    visit(synthetic("drilled_block", [](std::size_t m, unsigned int seed) {
+      return solid_boundary(machined_part_solid("drilled_block"), m, seed);
+    }, n, noise, 54));
+    visit(synthetic("finned_part", finned_part, n, noise, 45));
+  }
 }
 
 /// Calls `visit(dataset, k)` on the smooth clouds at CGAL's usual small k
