@@ -17,7 +17,8 @@ from collections import OrderedDict
 
 from report_orientation import orientation_report
 from report_plots import plot_error_vs, plot_fig7, plot_fig10, plot_time_vs_k, plot_time_vs_points, renderings
-from report_tables import adaptive_table, confidence_table, has_truth, read, refit_table, summary, table, targets_table
+from report_tables import (adaptive_table, confidence_table, has_truth, read, refit_table, summary, table, targets_table,
+                           threads_table)
 
 TITLES = {
     "headline": "Headline: RRHT against jet fitting, PCA, VCM (and PCL, Open3D) on shapes with sharp edges",
@@ -38,6 +39,7 @@ TITLES = {
     "confidence": "Confidence per point (confidence_map): does it predict the error? (100k points, 0.2% noise)",
     "orientation": "Orienting the normals: rrht_orient_normals against mst_orient_normals (and Open3D)",
     "default": "The default against its targets: every setting and jet fitting (100k points, k = 100, 2 threads)",
+    "threads": "Threads: the default, jet fitting and the bare neighbor queries from 1 thread to every core",
 }
 
 
@@ -103,6 +105,8 @@ def main():
             images, extra = orientation_report(rows, out)
         elif name == "default":
             extra = targets_table(out, args.before, "default_targets.csv", "value")
+        elif name == "threads":
+            extra = targets_table(out, args.before, "threads_targets.csv") + threads_table(rows)
         if name == "fig13_anisotropy":
             images += [i for i in rendered if i.startswith("fig11")]
         for image in images:

@@ -208,3 +208,19 @@ def summary(rows):
             cells.append("%.1f%%, %s%s" % (own["above10_percent"], ratio, "" if threads == 2 else " (1 thread)"))
         out.append("| %s | %s |" % (("**%s**" % name) if name.startswith("RRHT") else name, " | ".join(cells)))
     return "\n".join(out) + "\n"
+
+
+def threads_table(rows):
+    """The speed-up of each estimator on each cloud over its own median time with 1 thread."""
+    counts = sorted({int(r["threads"]) for r in rows})
+    lines = ["| cloud | estimator | " + " | ".join("%d thread%s" % (c, "" if c == 1 else "s") for c in counts) + " |",
+             "|---|---|" + "---|" * len(counts)]
+    keys = OrderedDict(((r["dataset"], r["points"], r["estimator"]), None) for r in rows)
+    for dataset, points, estimator in keys:
+        time = {int(r["threads"]): float(r["median_s"]) for r in rows
+                if (r["dataset"], r["points"], r["estimator"]) == (dataset, points, estimator)}
+        cells = ["%.2f s" % time[1] if c == 1 else "%.2f x" % (time[1] / time[c]) if c in time and time[c] > 0 else ""
+                 for c in counts]
+        lines.append("| %s %sk | %s | %s |" % (dataset, int(points) // 1000, estimator, " | ".join(cells)))
+    return "Time with 1 thread, then the speed-up over it (median times):\n\n" + "\n".join(lines) + "\n\n"
+

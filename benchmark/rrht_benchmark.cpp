@@ -23,7 +23,7 @@ const std::vector<std::pair<std::string, Run> >& experiments()
     { "fig13", fig13 },       { "fig15", fig15 }, { "meshes", meshes }, { "points", points }, { "scans", scans },
     { "speed", speed },       { "scaling", scaling }, { "confidence", confidence },
     { "adaptive", adaptive }, { "refit", refit },   { "fillets", fillets }, { "least_squares_first", least_squares_first },
-    { "orientation", orientation }, { "default", default_targets }
+    { "orientation", orientation }, { "default", default_targets }, { "threads", threads }
   };
   return all;
 }

@@ -360,17 +360,25 @@ int main(int argc, char** argv)
                       .aggregation(choice(options, "aggregation", CGAL::RRHT::aggregation_names))
                       .cluster_angle(options["cluster-angle"].as<double>())
                       .random_seed(static_cast<unsigned int>(options["seed"].as<long long>()))
-                      .callback(callback)
-                      .confidence_map(Confidence_map());
+                      .callback(callback);
     // The estimation with the parameters of the command line, run once on no
     // point before the input is read: CGAL::rrht_estimate_normals() checks
     // its parameters before it looks at the points, so that a value out of
-    // its ranges is a usage error, with the library's own message.
-    estimate = [k, planes, np](std::vector<Point_with_normal>& points) {
-      if(planes != 0)
-        CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(points, k, np.number_of_planes(planes));
+    // its ranges is a usage error, with the library's own message. The
+    // confidence map is passed only when the confidences are written: with
+    // one, the default also votes where it keeps a quadric.
+    const bool confidence = options.count("confidence") > 0;
+    estimate = [k, planes, confidence, np](std::vector<Point_with_normal>& points) {
+      auto run = [&](const auto& parameters) {
+        if(planes != 0)
+          CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(points, k, parameters.number_of_planes(planes));
+        else
+          CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(points, k, parameters);
+      };
+      if(confidence)
+        run(np.confidence_map(Confidence_map()));
       else
-        CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(points, k, np);
+        run(np);
     };
     std::vector<Point_with_normal> no_point;
     estimate(no_point);

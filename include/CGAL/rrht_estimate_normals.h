@@ -234,7 +234,10 @@ namespace CGAL {
                        accumulators and smaller neighborhoods spread the votes and lower it evenly: compare
                        values within a cloud and a setting (on a cube of 100k points with 0.2% noise, with
                        `paper_precise()`, the median is 0.16 on the faces and 0.04 within 1% of the diagonal of
-                       an edge). A null normal has confidence 0. Writing it costs no measurable time.}
+                       an edge). A null normal has confidence 0. With the paper's settings, writing it costs no
+                       measurable time; with `least_squares_first` (part of the default), the Hough transform's
+                       first stage then also votes where the quadric is kept, to measure it, which takes time:
+                       pass a confidence map only where the confidences are read.}
      \cgalParamNEnd
 
      \cgalParamNBegin{adaptive}

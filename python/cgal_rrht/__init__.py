@@ -263,7 +263,9 @@ def estimate_normals(
         point), as :func:`orient_normals` does; not with ``orient``.
     return_confidence : bool, default False
         Also return the confidence of each normal (beyond the paper; the
-        named parameter ``confidence_map`` of the C++ function).
+        named parameter ``confidence_map`` of the C++ function). With the
+        default setting it takes extra time: the Hough transform then also
+        votes where the quadric is kept.
     return_support : bool, default False
         Also return the support radius of each normal: the radius of the
         ball around the point that holds every point its normal depends on

@@ -102,7 +102,7 @@ struct Row_normal_map
 };
 
 /// Element i of a (N,) array of doubles, written (a confidence, a support
-/// radius); nothing is written when `data` is null (it was not asked for).
+/// radius).
 struct Row_value_map
 {
   typedef std::size_t key_type;
@@ -111,11 +111,7 @@ struct Row_value_map
   typedef boost::writable_property_map_tag category;
   double* data;
 
-  friend void put(const Row_value_map& map, std::size_t i, double value)
-  {
-    if(map.data)
-      map.data[i] = value;
-  }
+  friend void put(const Row_value_map& map, std::size_t i, double value) { map.data[i] = value; }
 };
 
 /// Element i of a (N,) array of 64-bit ids, or i itself when `data` is null
@@ -302,9 +298,7 @@ py::tuple estimate_normals(const py::array_t<double, py::array::c_style>& points
   const auto np = CGAL::RRHT::parameters::point_map(Row_point_map{points.data(), size, neighbors ? neighbors->data() : nullptr})
                     .neighbor_only_map(Row_neighbor_only_map{size})
                     .normal_map(Row_normal_map{normals.mutable_data()})
-                    .confidence_map(Row_value_map{with_confidence ? confidence.mutable_data() : nullptr})
                     .point_id_map(Row_id_map{ids ? ids->data() : nullptr})
-                    .support_radius_map(Row_value_map{with_support ? support.mutable_data() : nullptr})
                     .neighbor_radius(options.radius)
                     .number_of_rotations(options.rotations)
                     .accumulator_slices(options.slices)
@@ -320,12 +314,28 @@ py::tuple estimate_normals(const py::array_t<double, py::array::c_style>& points
   tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
   run_interruptibly(
     [&](const std::function<bool(double)>& callback) {
-      arena.execute([&]() {
+      auto run = [&](const auto& parameters) {
+        const auto with_callback = parameters.callback(callback);
         if(options.planes)
           CGAL::rrht_estimate_normals<CGAL::Parallel_tag>(rows, options.k,
-                                                          np.callback(callback).number_of_planes(*options.planes));
+                                                          with_callback.number_of_planes(*options.planes));
         else
-          CGAL::rrht_estimate_normals<CGAL::Parallel_tag>(rows, options.k, np.callback(callback));
+          CGAL::rrht_estimate_normals<CGAL::Parallel_tag>(rows, options.k, with_callback);
+      };
+      // The confidence and support maps only where they are asked for: with a
+      // confidence map the default also votes where it keeps a quadric, and
+      // with a support map it measures every point's support.
+      auto run_with_support = [&](const auto& parameters) {
+        if(with_support)
+          run(parameters.support_radius_map(Row_value_map{ support.mutable_data() }));
+        else
+          run(parameters);
+      };
+      arena.execute([&]() {
+        if(with_confidence)
+          run_with_support(np.confidence_map(Row_value_map{ confidence.mutable_data() }));
+        else
+          run_with_support(np);
       });
     },
     progress);
