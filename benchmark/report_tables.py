@@ -219,7 +219,7 @@ def threads_table(rows):
     for dataset, points, estimator in keys:
         time = {int(r["threads"]): float(r["median_s"]) for r in rows
                 if (r["dataset"], r["points"], r["estimator"]) == (dataset, points, estimator)}
-        cells = ["%.2f s" % time[1] if c == 1 else "%.2f x" % (time[1] / time[c]) if c in time and time[c] > 0 else ""
+        cells = ["%.2f s" % time[1] if c == 1 else "%.2f×" % (time[1] / time[c]) if c in time and time[c] > 0 else ""
                  for c in counts]
         lines.append("| %s %sk | %s | %s |" % (dataset, int(points) // 1000, estimator, " | ".join(cells)))
     return "Time with 1 thread, then the speed-up over it (median times):\n\n" + "\n".join(lines) + "\n\n"
