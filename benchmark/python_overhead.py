@@ -15,7 +15,8 @@ of its own, and a ratio is the median of the ratios round by round (as the
 targets experiment does), so that a drift of the machine's speed weighs on
 both. The first round also checks that both give the same normals, bit for
 bit. Neither call asks for the confidences but in the last setting, where
-Python does: its ratio is then what the confidences cost. cgal_rrht must be importable by this interpreter (pip install, or
+Python does: its ratio is then what the confidences cost. cgal_rrht must be
+importable by this interpreter (pip install, or
 PYTHONPATH=build/release/python).
 """
 

@@ -223,4 +223,3 @@ def threads_table(rows):
                  for c in counts]
         lines.append("| %s %sk | %s | %s |" % (dataset, int(points) // 1000, estimator, " | ".join(cells)))
     return "Time with 1 thread, then the speed-up over it (median times):\n\n" + "\n".join(lines) + "\n\n"
-
