@@ -250,8 +250,9 @@ void scans(const Config& config)
   }
 }
 
-// -- Time against the number of points at the fast setting, against jet
-// fitting: sphere with 0.2% noise, 2 threads (the report fits n log n).
+// -- Time and peak memory against the number of points, the default and the
+// fast setting against jet fitting and the bare queries: sphere with 0.2%
+// noise, 2 threads (the report fits n log n).
 void scaling(const Config& config)
 {
   Experiment x(config, "scaling");
@@ -260,6 +261,7 @@ void scaling(const Config& config)
   for(std::size_t n : sizes)
   {
     const Dataset d = synthetic("sphere", sphere, n, 0.2, 32);
+    x.run(d, rrht_default(rrht_k));
     x.run(d, rrht(Rrht_setting::fast(), rrht_k));
     x.run(d, jet(paper_k));
     x.run(d, neighbor_queries(rrht_k));

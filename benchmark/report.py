@@ -32,7 +32,7 @@ TITLES = {
     "real_points": "Point sets with given normals (../shared/data/points)",
     "real_scans": "Real scans without normals (../shared/data/scans): time and memory",
     "speed": "Speed: the performance targets on the 100k-point cube and the 1M-point sphere, 0.2% noise; time against k",
-    "scaling": "Time against the number of points at the fast setting (sphere, 0.2% noise)",
+    "scaling": "Time and memory against the number of points, the default and the fast setting (sphere, 0.2% noise)",
     "adaptive": "The adaptive setting against the precise setting and RRHT_Cubes (100k points, 0.2% noise, 2 threads)",
     "refit": "The least-squares refit (refit=True) on smooth, sharp and thin clouds (100k points, 2 threads)",
     "fillets": "Fillets: every RRHT setting against jet fitting on rounded edges (100k points, 2 threads)",
@@ -74,8 +74,8 @@ def main():
             images = plot_time_vs_points(rows, out, name, "RRHT_Points_c_noCI",
                                          "Sphere, 0.2% noise, no confidence interval")
         elif name == "scaling":
-            images = plot_time_vs_points(rows, out, name, "RRHT_Points_c_fast",
-                                         "Sphere, 0.2% noise, fast setting (T = 300, n_rot = 2)")
+            images = plot_time_vs_points(rows, out, name, "RRHT_default",
+                                         "Sphere, 0.2% noise, the default and the fast setting (T = 300, n_rot = 2)")
         elif name == "speed":
             images, against_k = plot_time_vs_k(rows, out)
             extra = targets_table(out, args.before) + against_k

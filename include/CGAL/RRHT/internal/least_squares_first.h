@@ -20,7 +20,7 @@
 #include <CGAL/RRHT/internal/adaptive.h>
 #include <CGAL/RRHT/internal/confidence.h>
 #include <CGAL/RRHT/internal/estimate_normal.h>
-#include <CGAL/RRHT/internal/for_each_block.h>
+#include <CGAL/RRHT/internal/neighborhood_passes.h>
 #include <CGAL/RRHT/internal/refit_normal.h>
 
 #include <Eigen/Core>
@@ -301,10 +301,6 @@ inline Quadric_fit fit_point_side(const std::vector<Eigen::Vector3d>& points, do
   return own.normal != Eigen::Vector3d::Zero() ? own : fit;
 }
 
-/// The neighborhoods of all the points, kept from the first pass for the
-/// next ones: the positions of each point's neighbors, nearest first.
-typedef std::vector<std::vector<std::uint32_t> > Neighbor_lists;
-
 /// Whether a quadric whose residuals have the root mean square `rms` is one
 /// smooth sheet within the noise of the scan in a ball of `radius`, where
 /// the first quartile of the noise deviations of its `count` neighbors is
@@ -396,8 +392,10 @@ struct Least_squares_first_options
 };
 
 /// Estimates the normals of the points of the context's search that it
-/// estimates, least squares first, in three passes over the cloud, and
-/// writes each normal, confidence and support to the context's output:
+/// estimates, least squares first, in three passes over the cloud
+/// (`neighborhood_passes()`, each point's neighbors kept from its first
+/// pass to its third), and writes each normal, confidence and support to
+/// the context's output:
 /// 1. at every point, the quadric of its neighborhood (`fit_quadric()`),
 ///    or of its side of a thin part (`fit_point_side()`), whose neighbors
 ///    are kept;
@@ -427,110 +425,110 @@ void least_squares_first(const Pass_context& context, const Least_squares_first_
     context.output.support(i, support);
   };
   const std::size_t size = search.size();
-  Neighbor_lists neighbors(size);
-  std::vector<Eigen::Vector3d> normals(size);
-  std::vector<double> rms(size), noise(size), radii(size), extents(options.supports ? size : 0);
-  for_each_block<ConcurrencyTag>(size, progress, make_scratch, [&](std::size_t begin, std::size_t end, Scratch& scratch) {
-    Neighborhood& neighborhood = scratch.neighborhood;
-    for(std::size_t i = begin; i < end; ++i)
-    {
-      search.find(i, settings.k, settings.neighbor_radius, neighborhood, scratch.search);
-      neighbors[i].assign(neighborhood.positions.begin(), neighborhood.positions.end());
-      radii[i] = neighborhood.radius;
-      if(options.supports)
-        extents[i] = context.support_of(neighborhood);
-      const Quadric_fit fit = fit_point_side(
-        neighborhood.points, neighborhood.radius, fit_quadric(neighborhood.points, neighborhood.radius, scratch.refit),
-        scratch.refit);
-      // The noise relative to the neighborhood's radius: where the density
-      // varies, so does the scale of the neighborhoods a deviation is from.
-      normals[i] = fit.normal, rms[i] = fit.rms, noise[i] = fit.noise / neighborhood.radius;
-    }
-  });
-
-  // The noise around each point, its test and, for the supports, the ball
-  // that holds its neighbors' neighborhoods.
-  std::vector<double> noise_near(size), reach(options.supports ? size : 0);
+  // What the neighbors of a point read of its passes, for the whole cloud:
+  // its noise deviation (relative to its radius), its test and, for the
+  // supports, the balls that hold its neighborhood and its neighbors'.
+  std::vector<double> noise(size), extents(options.supports ? size : 0), reach(options.supports ? size : 0);
   std::vector<unsigned char> one_sheet(size);
-  for_each_block<ConcurrencyTag>(size, progress, make_scratch, [&](std::size_t begin, std::size_t end, Scratch& scratch) {
-    for(std::size_t i = begin; i < end; ++i)
+  // What a point's own passes hand to each other.
+  struct State
+  {
+    Eigen::Vector3d normal;
+    double rms, radius, noise_near;
+  };
+
+  auto fit = [&](std::size_t i, std::vector<std::uint32_t>& neighbors, State& state, Scratch& scratch) {
+    Neighborhood& neighborhood = scratch.neighborhood;
+    search.find(i, settings.k, settings.neighbor_radius, neighborhood, scratch.search);
+    neighbors.assign(neighborhood.positions.begin(), neighborhood.positions.end());
+    state.radius = neighborhood.radius;
+    if(options.supports)
+      extents[i] = context.support_of(neighborhood);
+    const Quadric_fit fit = fit_point_side(
+      neighborhood.points, neighborhood.radius, fit_quadric(neighborhood.points, neighborhood.radius, scratch.refit),
+      scratch.refit);
+    // The noise relative to the neighborhood's radius: where the density
+    // varies, so does the scale of the neighborhoods a deviation is from.
+    state.normal = fit.normal, state.rms = fit.rms, noise[i] = fit.noise / neighborhood.radius;
+  };
+
+  // The noise around the point, its test and, for the supports, the ball
+  // that holds its neighbors' neighborhoods.
+  auto test = [&](std::size_t i, const std::vector<std::uint32_t>& neighbors, State& state, Scratch& scratch) {
+    state.noise_near = state.radius * noise_of_neighbors(neighbors, noise, scratch.refit.work);
+    one_sheet[i] = is_one_sheet(state.rms, state.noise_near, neighbors.size(), state.radius);
+    if(!one_sheet[i] && state.normal != Eigen::Vector3d::Zero() &&
+       neighbors.size() >= Least_squares_first_thresholds::least_for_sheets)
     {
-      noise_near[i] = radii[i] * noise_of_neighbors(neighbors[i], noise, scratch.refit.work);
-      one_sheet[i] = is_one_sheet(rms[i], noise_near[i], neighbors[i].size(), radii[i]);
-      if(!one_sheet[i] && normals[i] != Eigen::Vector3d::Zero() &&
-         neighbors[i].size() >= Least_squares_first_thresholds::least_for_sheets)
-      {
-        // Two sheets: the quadric of the point's own, if it is one sheet.
-        search.rebuild(i, neighbors[i], radii[i], scratch.neighborhood);
-        const Quadric_fit own = fit_own_sheet(scratch.neighborhood.points, radii[i], normals[i], scratch.refit);
-        if(is_one_sheet(own.rms, noise_near[i], scratch.refit.own.size(), radii[i]))
-          one_sheet[i] = 1, normals[i] = own.normal;
-      }
-      if(options.supports)
-      {
-        double farthest = 0;
-        for(std::uint32_t j : neighbors[i])
-          farthest = (std::max)(farthest, (search.point(j) - search.point(i)).norm() + extents[j]);
-        reach[i] = farthest;
-      }
+      // Two sheets: the quadric of the point's own, if it is one sheet.
+      search.rebuild(i, neighbors, state.radius, scratch.neighborhood);
+      const Quadric_fit own = fit_own_sheet(scratch.neighborhood.points, state.radius, state.normal, scratch.refit);
+      if(is_one_sheet(own.rms, state.noise_near, scratch.refit.own.size(), state.radius))
+        one_sheet[i] = 1, state.normal = own.normal;
     }
-  });
-  std::vector<double>().swap(noise);
+    if(options.supports)
+    {
+      double farthest = 0;
+      for(std::uint32_t j : neighbors)
+        farthest = (std::max)(farthest, (search.point(j) - search.point(i)).norm() + extents[j]);
+      reach[i] = farthest;
+    }
+  };
 
   const Settings& first_stage = options.stages ? options.stages->cheap : settings;
-  for_each_block<ConcurrencyTag>(size, progress, make_scratch, [&](std::size_t begin, std::size_t end, Scratch& scratch) {
+  auto estimate = [&](std::size_t i, const std::vector<std::uint32_t>& neighbors, const State& state,
+                      Scratch& scratch) {
+    if(!context.estimated(i))
+      return;
     Neighborhood& neighborhood = scratch.neighborhood;
-    for(std::size_t i = begin; i < end; ++i)
+    double support = 0;
+    if(options.supports)
     {
-      if(!context.estimated(i))
-        continue;
-      double support = 0;
-      if(options.supports)
-      {
-        support = reach[i];
-        for(std::uint32_t j : neighbors[i])
-          support = (std::max)(support, (search.point(j) - search.point(i)).norm() + reach[j]);
-      }
-      const bool quadric = keeps_quadric(i, neighbors[i], one_sheet);
-      const bool border = quadric && std::any_of(neighbors[i].begin(), neighbors[i].end(),
-                                                 [&](std::uint32_t j) { return !one_sheet[j]; });
-      if(quadric && !border && !options.confidences)
-      {
-        write(i, normals[i], 0., support);
-        continue;
-      }
-      search.rebuild(i, neighbors[i], radii[i], neighborhood);
-      const Eigen::Vector3d referee = border ? referee_normal(neighborhood.points, scratch.refit) : Eigen::Vector3d::Zero();
-      const bool contested = border && contests_quadric(referee, normals[i]);
-      if(quadric && !contested && !options.confidences)
-      {
-        write(i, normals[i], 0., support);
-        continue;
-      }
-      const std::uint64_t id = search.id(i);
-      Estimated_normal e;
-      if(quadric)
-      {
-        const Estimated_normal cheap = estimate_normal_of_neighborhood(id, first_stage, scratch);
-        if(!contested || !prefers_hough(cheap.normal, normals[i], referee))
-        {
-          write(i, normals[i], confidence(scratch.candidates, normals[i], first_stage.cos_cluster_angle), support);
-          continue;
-        }
-        e = options.stages ? recheck(id, cheap, *options.stages, scratch) : cheap;
-      }
-      else
-        e = estimate_normal_of_found(id, settings, scratch, options.stages);
-      if(options.refit && e.normal != Eigen::Vector3d::Zero() && std::isfinite(noise_near[i]))
-      {
-        const Eigen::Vector3d refitted =
-          refit_normal(neighborhood.points, neighborhood.radius, e.normal, noise_near[i], scratch.refit);
-        if(refitted != Eigen::Vector3d::Zero())
-          e.normal = refitted;
-      }
-      write(i, e.normal, e.confidence, support);
+      support = reach[i];
+      for(std::uint32_t j : neighbors)
+        support = (std::max)(support, (search.point(j) - search.point(i)).norm() + reach[j]);
     }
-  });
+    const bool quadric = keeps_quadric(i, neighbors, one_sheet);
+    const bool border =
+      quadric && std::any_of(neighbors.begin(), neighbors.end(), [&](std::uint32_t j) { return !one_sheet[j]; });
+    if(quadric && !border && !options.confidences)
+    {
+      write(i, state.normal, 0., support);
+      return;
+    }
+    search.rebuild(i, neighbors, state.radius, neighborhood);
+    const Eigen::Vector3d referee = border ? referee_normal(neighborhood.points, scratch.refit) : Eigen::Vector3d::Zero();
+    const bool contested = border && contests_quadric(referee, state.normal);
+    if(quadric && !contested && !options.confidences)
+    {
+      write(i, state.normal, 0., support);
+      return;
+    }
+    const std::uint64_t id = search.id(i);
+    Estimated_normal e;
+    if(quadric)
+    {
+      const Estimated_normal cheap = estimate_normal_of_neighborhood(id, first_stage, scratch);
+      if(!contested || !prefers_hough(cheap.normal, state.normal, referee))
+      {
+        write(i, state.normal, confidence(scratch.candidates, state.normal, first_stage.cos_cluster_angle), support);
+        return;
+      }
+      e = options.stages ? recheck(id, cheap, *options.stages, scratch) : cheap;
+    }
+    else
+      e = estimate_normal_of_found(id, settings, scratch, options.stages);
+    if(options.refit && e.normal != Eigen::Vector3d::Zero() && std::isfinite(state.noise_near))
+    {
+      const Eigen::Vector3d refitted =
+        refit_normal(neighborhood.points, neighborhood.radius, e.normal, state.noise_near, scratch.refit);
+      if(refitted != Eigen::Vector3d::Zero())
+        e.normal = refitted;
+    }
+    write(i, e.normal, e.confidence, support);
+  };
+
+  neighborhood_passes<ConcurrencyTag, State>(size, progress, make_scratch, fit, test, estimate);
 }
 
 } // namespace internal
