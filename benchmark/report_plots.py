@@ -24,6 +24,8 @@ def style(name):
     """Color by sampling, line style by aggregation as in the paper's plots."""
     if name.startswith("RRHT_"):
         parts = name.split("_")
+        if len(parts) < 3:  # RRHT_default
+            return dict(color="tab:red", linestyle="-", marker="o")
         return dict(color=COLORS.get(parts[1], "tab:red"), linestyle=STYLES.get(parts[2], "-"), marker="o")
     return dict(color=COLORS.get(name, "tab:gray"), linestyle="-.", marker="s")
 

@@ -319,9 +319,9 @@ namespace CGAL {
                        quartile as the noise deviation). The confidence written for a quadric's normal is measured on
                        the votes of the Hough transform's first stage at the point (the cheap stage with `adaptive`),
                        which runs where the quadric is kept only next to a point that failed the test, or if a
-                       `confidence_map` is given. The neighbors of every point are kept between the passes: 4 (n + 1)
-                       bytes per point, and at most 2^32 - 1 points. The result stays the same for any number of
-                       threads.}
+                       `confidence_map` is given. The passes are streamed along a Hilbert curve of the points, so that
+                       each point's neighbors are kept from its first pass to its third only; at most 2^32 - 1
+                       points. The result stays the same for any number of threads.}
      \cgalParamNEnd
 
      \cgalParamNBegin{point_id_map}
