@@ -109,6 +109,7 @@ private:
   typedef CGAL::Distance_adapter<std::size_t, Point_map, CGAL::Euclidean_distance<Base_traits> > Distance;
   typedef CGAL::Orthogonal_k_neighbor_search<Traits, Distance, Splitter, Tree> K_neighbor_search;
   typedef CGAL::Fuzzy_sphere<Traits> Sphere;
+  static constexpr unsigned int leaf_size = 32;
 
 public:
   /// Per-thread buffer of the search, reused from one query to the next.
@@ -143,8 +144,10 @@ public:
     m_point_map.points = m_points.data();
     m_traits = Traits(m_point_map);
     m_distance = Distance(m_point_map);
+    // Leaves of 32 points instead of CGAL's 10: a third of the nodes, and
+    // queries of 18 to 100 neighbors as fast.
     m_tree.reset(new Tree(boost::counting_iterator<std::size_t>(0),
-                          boost::counting_iterator<std::size_t>(m_points.size()), Splitter(), m_traits));
+                          boost::counting_iterator<std::size_t>(m_points.size()), Splitter(leaf_size), m_traits));
     // In parallel when TBB is there (Kd_tree's own parallel build): the
     // same tree.
 #ifdef CGAL_TBB_STRUCTURE_IN_KD_TREE
