@@ -225,9 +225,9 @@ inline Estimator neighbor_queries(const Neighborhood& n)
   e.name = "queries" + n.suffix();
   e.estimate = [n](Cloud& cloud, unsigned int) {
     typedef CGAL::RRHT::internal::Neighbor_search Search;
-    std::vector<Search::Indexed_point> points;
+    std::vector<Search::Point> points;
     for(const Sample& s : cloud)
-      points.emplace_back(Search::Point(s.point.x(), s.point.y(), s.point.z()), points.size());
+      points.emplace_back(s.point.x(), s.point.y(), s.point.z());
     const Search search(std::move(points), CGAL::Parallel_if_available_tag());
     struct Scratch
     {

@@ -12,6 +12,8 @@
 #include <CGAL/Point_set_3.h>
 #include <CGAL/Simple_cartesian.h>
 
+#include <boost/range/counting_range.hpp>
+
 #include <catch2/catch.hpp>
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -526,6 +528,33 @@ TEST_CASE("Ball neighborhoods: with and without a cap on the number of points", 
   }
 }
 
+namespace {
+
+// Maps on positions that count their use: what reads no point leaves 0.
+struct Counted_use
+{
+  std::atomic<std::size_t>* uses;
+};
+struct Point_at : Counted_use
+{
+  typedef std::uint64_t key_type;
+  typedef SC::Point_3 value_type;
+  typedef value_type reference;
+  typedef boost::readable_property_map_tag category;
+  friend value_type get(const Point_at& map, std::uint64_t i) { return ++*map.uses, value_type(double(i), 0, 0); }
+};
+struct Normal_at : Counted_use
+{
+  typedef std::uint64_t key_type;
+  typedef SC::Vector_3 value_type;
+  typedef value_type reference;
+  typedef boost::read_write_property_map_tag category;
+  friend value_type get(const Normal_at& map, std::uint64_t) { return ++*map.uses, value_type(0, 0, 1); }
+  friend void put(const Normal_at& map, std::uint64_t, const value_type&) { ++*map.uses; }
+};
+
+} // namespace
+
 TEST_CASE("Bad input: a clear exception or a documented result, never NaN", "[api][bad-input]")
 {
   typedef Point_with_normal<SC> PN;
@@ -543,6 +572,17 @@ TEST_CASE("Bad input: a clear exception or a documented result, never NaN", "[ap
     CHECK_THROWS_AS(estimate(cloud, 10, maps.number_of_planes(0)), std::invalid_argument);
     CHECK_THROWS_AS(estimate(cloud, 0, maps), std::invalid_argument);
   }
+  SECTION("more than 2^32 - 1 points: refused before a point is read or a normal written")
+  {
+    // A range of 2^32 positions, whose point and normal maps count their use.
+    auto huge = boost::counting_range(std::uint64_t(0), std::uint64_t(1) << 32);
+    std::atomic<std::size_t> uses(0);
+    CHECK_THROWS_WITH(CGAL::rrht_estimate_normals<CGAL::Sequential_tag>(
+                        huge, 10, params::point_map(Point_at{ { &uses } }).normal_map(Normal_at{ { &uses } })),
+                      Catch::Contains("2^32 - 1 points"));
+    CHECK(uses == 0);
+  }
+
   SECTION("1 and 2 points, all points identical, collinear points: the null vector")
   {
     for(std::size_t n : { 1, 2 })

@@ -146,9 +146,9 @@ Runs one_run(const Edge_neighborhood& n, const Eigen::Vector3d& expected, int ru
 double worst_angle_of_estimate_normal(const Edge_neighborhood& n, const Eigen::Vector3d& expected, Sampling sampling,
                                       int seeds)
 {
-  std::vector<Neighbor_search::Indexed_point> cloud;
+  std::vector<Neighbor_search::Point> cloud;
   for(std::size_t i = 0; i < n.points.size(); ++i)
-    cloud.emplace_back(Neighbor_search::Point(n.points[i].x(), n.points[i].y(), n.points[i].z()), i);
+    cloud.emplace_back(n.points[i].x(), n.points[i].y(), n.points[i].z());
   const Neighbor_search search(std::move(cloud), CGAL::Sequential_tag());
   std::size_t position = 0; // of P (input index 0) in the search's order
   while(search.input_index(position) != 0)

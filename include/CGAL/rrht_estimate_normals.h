@@ -319,9 +319,9 @@ namespace CGAL {
                        quartile as the noise deviation). The confidence written for a quadric's normal is measured on
                        the votes of the Hough transform's first stage at the point (the cheap stage with `adaptive`),
                        which runs where the quadric is kept only next to a point that failed the test, or if a
-                       `confidence_map` is given. The passes are streamed along a Hilbert curve of the points, so that
-                       each point's neighbors are kept from its first pass to its third only; at most 2^32 - 1
-                       points. The result stays the same for any number of threads.}
+                       `confidence_map` is given. The passes are streamed along a Hilbert curve of the points: each
+                       point's neighbors are kept between its passes where these are close along the curve, and
+                       found again elsewhere. The result stays the same for any number of threads.}
      \cgalParamNEnd
 
      \cgalParamNBegin{point_id_map}
@@ -370,8 +370,9 @@ namespace CGAL {
    \cgalNamedParamsEnd
 
    \throws std::invalid_argument if `k` is 0 without a positive `neighbor_radius`, or if a parameter is out
-           of the range given above (a negative or non-finite radius, 0 planes, 0 rotations, 0 slices...).
-   Nothing is written then. An empty range is left as it is.
+           of the range given above (a negative or non-finite radius, 0 planes, 0 rotations, 0 slices...), or if
+           `points` holds more than 2^32 - 1 points (as `CGAL::Point_set_3`'s 32-bit indices; larger clouds are
+           processed in tiles). Nothing is written then. An empty range is left as it is.
 */
 template <typename ConcurrencyTag,
           typename PointRange,
@@ -427,7 +428,8 @@ void rrht_estimate_normals(PointRange& points,
                                                     internal_np::Param_not_found>::value;
   std::vector<bool> neighbor_only;
   RRHT::internal::Elements<typename PointRange::iterator> elements;
-  std::vector<RRHT::internal::Neighbor_search::Indexed_point> cloud;
+  std::vector<RRHT::internal::Neighbor_search::Point> cloud;
+  std::vector<std::uint32_t> input; // the position of each point of the cloud
   std::vector<std::uint64_t> ids;
   std::size_t position = 0;
   for(auto it = points.begin(); it != points.end(); ++it, ++position)
@@ -440,7 +442,7 @@ void rrht_estimate_normals(PointRange& points,
     if constexpr(with_neighbor_only)
       neighbor_only.push_back(static_cast<bool>(get(neighbor_only_map, *it)));
     if(RRHT::internal::has_finite_coordinates(q))
-      cloud.emplace_back(q, position);
+      cloud.push_back(q), input.push_back(std::uint32_t(position));
     else if(neighbor_only.empty() || !neighbor_only.back())
     {
       put(normal_map, *it, CGAL::NULL_VECTOR);
@@ -450,7 +452,7 @@ void rrht_estimate_normals(PointRange& points,
   }
   if(cloud.empty())
     return;
-  const RRHT::internal::Neighbor_search search(std::move(cloud), ids, ConcurrencyTag());
+  const RRHT::internal::Neighbor_search search(std::move(cloud), std::move(input), ids, ConcurrencyTag());
   std::vector<std::uint64_t>().swap(ids);
   const std::size_t size = search.size();
   settings.k = static_cast<unsigned int>((std::min<std::size_t>)(k, size - 1));

@@ -159,8 +159,9 @@ namespace CGAL {
    \return an iterator to the first point whose normal was not oriented.
 
    \throws std::invalid_argument if more than one of `direction`, `viewpoint` and `viewpoint_map` is given, if
-           `direction` is null or not finite, if `viewpoint` is not finite, or if `k` is below 2 for the
-           consistent orientation. Nothing is changed then.
+           `direction` is null or not finite, if `viewpoint` is not finite, if `k` is below 2 for the
+           consistent orientation, or if `points` holds more than 2^32 - 1 points (as `CGAL::Point_set_3`'s
+           32-bit indices). Nothing is changed then.
 */
 template <typename ConcurrencyTag,
           typename PointRange,
@@ -218,6 +219,8 @@ typename PointRange::iterator rrht_orient_normals(PointRange& points,
   }
   constexpr bool consistent = !with_direction && !with_viewpoint && !with_viewpoint_map;
   check(!consistent || k >= 2, "k must be at least 2");
+  check(std::size_t(std::distance(points.begin(), points.end())) <= RRHT::internal::Neighbor_search::max_size(),
+        "at most 2^32 - 1 points at once");
 
   // The points that can be oriented: finite, with a finite, non-null normal
   // (and a finite viewpoint).
@@ -253,14 +256,12 @@ typename PointRange::iterator rrht_orient_normals(PointRange& points,
   else
   {
     // The oriented points by their position from the beginning of the range.
-    std::vector<RRHT::internal::Neighbor_search::Indexed_point> cloud;
+    std::vector<RRHT::internal::Neighbor_search::Point> cloud;
     RRHT::internal::Elements<typename PointRange::iterator> elements;
     for(auto it = points.begin(); it != first_unoriented; ++it)
     {
       const auto& p = get(point_map, *it);
-      cloud.emplace_back(RRHT::internal::Neighbor_search::Point(CGAL::to_double(p.x()), CGAL::to_double(p.y()),
-                                                                CGAL::to_double(p.z())),
-                         cloud.size());
+      cloud.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
       elements.add(it);
     }
     if(cloud.empty())

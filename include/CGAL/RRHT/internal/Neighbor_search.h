@@ -26,7 +26,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <memory>
+#include <numeric>
 #include <utility>
 #include <vector>
 
@@ -80,33 +82,35 @@ bool has_finite_coordinates(const Point& p)
 /// The points, all with finite coordinates, are stored in the order of a Hilbert curve
 /// (`CGAL::hilbert_sort()`), and queries are made by position in that order:
 /// points close in space are close in memory, so consecutive queries walk
-/// the same branches of the tree and read the same cache lines.
+/// the same branches of the tree and read the same cache lines. Positions
+/// are 32-bit, as the indices of `CGAL::Point_set_3`: at most 2^32 - 1
+/// points (`max_size()`).
 class Neighbor_search
 {
 public:
   typedef CGAL::Simple_cartesian<double> Kernel;
   typedef Kernel::Point_3 Point;
-  /// A point with its position in the input.
-  typedef std::pair<Point, std::size_t> Indexed_point;
+  /// The most points a search holds.
+  static constexpr std::size_t max_size() { return (std::numeric_limits<std::uint32_t>::max)(); }
 
 private:
   // The tree holds positions in m_points; this map gives their points.
   struct Point_map
   {
-    typedef std::size_t key_type;
+    typedef std::uint32_t key_type;
     typedef Point value_type;
     typedef const Point& reference;
     typedef boost::readable_property_map_tag category;
-    const Indexed_point* points = nullptr;
-    friend reference get(const Point_map& map, std::size_t i) { return map.points[i].first; }
+    const Point* points = nullptr;
+    friend reference get(const Point_map& map, std::uint32_t i) { return map.points[i]; }
   };
   typedef CGAL::Search_traits_3<Kernel> Base_traits;
-  typedef CGAL::Search_traits_adapter<std::size_t, Point_map, Base_traits> Traits;
+  typedef CGAL::Search_traits_adapter<std::uint32_t, Point_map, Base_traits> Traits;
   typedef CGAL::Sliding_midpoint<Traits> Splitter;
   // Without the tree's cache of coordinates: the points are already in the
   // order of the tree's leaves, and the cache would cost 24 bytes per point.
   typedef CGAL::Kd_tree<Traits, Splitter, CGAL::Tag_true, CGAL::Tag_false> Tree;
-  typedef CGAL::Distance_adapter<std::size_t, Point_map, CGAL::Euclidean_distance<Base_traits> > Distance;
+  typedef CGAL::Distance_adapter<std::uint32_t, Point_map, CGAL::Euclidean_distance<Base_traits> > Distance;
   typedef CGAL::Orthogonal_k_neighbor_search<Traits, Distance, Splitter, Tree> K_neighbor_search;
   typedef CGAL::Fuzzy_sphere<Traits> Sphere;
   static constexpr unsigned int leaf_size = 32;
@@ -118,36 +122,62 @@ public:
     std::vector<std::pair<double, std::size_t> > ball; // squared distance, index
   };
 
-  /// Takes the points of `cloud`, which must have finite coordinates (the
-  /// cloud is emptied), sorts them along a Hilbert curve and builds the tree.
-  /// The id of each point is its position in the input.
+  /// Takes `points`, at most `max_size()`, all with finite coordinates (the
+  /// vector is emptied), sorts them along a Hilbert curve and builds the
+  /// tree. The id of each point is its position in `points`.
   template <typename ConcurrencyTag>
-  Neighbor_search(std::vector<Indexed_point>&& cloud, ConcurrencyTag tag)
-    : Neighbor_search(std::move(cloud), std::vector<std::uint64_t>(), tag)
+  Neighbor_search(std::vector<Point>&& points, ConcurrencyTag tag)
+    : Neighbor_search(std::move(points), std::vector<std::uint32_t>(), std::vector<std::uint64_t>(), tag)
   {}
 
-  /// As above, with the id of each point given by `ids` at its position in
-  /// the input (the second of its pair), unless `ids` is empty.
+  /// As above, where the point at `i` in `points` has the position
+  /// `input[i]` in the input (`input` is emptied), unless `input` is empty,
+  /// and the id `ids[input[i]]`, unless `ids` is empty.
   template <typename ConcurrencyTag>
-  Neighbor_search(std::vector<Indexed_point>&& cloud, const std::vector<std::uint64_t>& ids, ConcurrencyTag)
-    : m_points(std::move(cloud))
+  Neighbor_search(std::vector<Point>&& points, std::vector<std::uint32_t>&& input, const std::vector<std::uint64_t>& ids,
+                  ConcurrencyTag)
+    : m_points(std::move(points))
   {
-    typedef CGAL::Spatial_sort_traits_adapter_3<Kernel, CGAL::First_of_pair_property_map<Indexed_point> > Sort_traits;
-    CGAL::hilbert_sort<ConcurrencyTag>(m_points.begin(), m_points.end(), Sort_traits(),
+    const std::size_t n = m_points.size();
+    CGAL_precondition(n <= max_size() && (input.empty() || input.size() == n));
+    // The curve's order of the positions, sorted as 4-byte indices, then the
+    // points moved to it in place: the points are never copied.
+    m_input.resize(n);
+    std::iota(m_input.begin(), m_input.end(), std::uint32_t(0));
+    m_point_map.points = m_points.data();
+    CGAL::hilbert_sort<ConcurrencyTag>(m_input.begin(), m_input.end(),
+                                       CGAL::Spatial_sort_traits_adapter_3<Kernel, Point_map>(m_point_map),
                                        CGAL::Hilbert_sort_median_policy());
+    std::vector<bool> placed(n, false);
+    for(std::size_t start = 0; start < n; ++start)
+    {
+      if(placed[start])
+        continue;
+      const Point first = m_points[start];
+      std::size_t to = start;
+      for(std::size_t from = m_input[to]; from != start; to = from, from = m_input[to])
+        m_points[to] = m_points[from], placed[to] = true;
+      m_points[to] = first, placed[to] = true;
+    }
+    if(!input.empty())
+    {
+      for(std::uint32_t& position : m_input)
+        position = input[position];
+      std::vector<std::uint32_t>().swap(input);
+    }
     if(!ids.empty())
     {
-      m_ids.reserve(m_points.size());
-      for(const Indexed_point& p : m_points)
-        m_ids.push_back(ids[p.second]);
+      m_ids.reserve(n);
+      for(std::uint32_t position : m_input)
+        m_ids.push_back(ids[position]);
     }
-    m_point_map.points = m_points.data();
     m_traits = Traits(m_point_map);
     m_distance = Distance(m_point_map);
     // Leaves of 32 points instead of CGAL's 10: a third of the nodes, and
     // queries of 18 to 100 neighbors as fast.
-    m_tree.reset(new Tree(boost::counting_iterator<std::size_t>(0),
-                          boost::counting_iterator<std::size_t>(m_points.size()), Splitter(leaf_size), m_traits));
+    m_tree.reset(new Tree(boost::counting_iterator<std::uint32_t>(0),
+                          boost::counting_iterator<std::uint32_t>(std::uint32_t(m_points.size())), Splitter(leaf_size),
+                          m_traits));
     // In parallel when TBB is there (Kd_tree's own parallel build): the
     // same tree.
 #ifdef CGAL_TBB_STRUCTURE_IN_KD_TREE
@@ -161,23 +191,23 @@ public:
   std::size_t size() const { return m_points.size(); }
 
   /// Position in the input of the point at position `i` in the tree's order.
-  std::size_t input_index(std::size_t i) const { return m_points[i].second; }
+  std::size_t input_index(std::size_t i) const { return m_input[i]; }
 
   /// The point at position `i` in the tree's order.
   Eigen::Vector3d point(std::size_t i) const
   {
-    const Point& p = m_points[i].first;
+    const Point& p = m_points[i];
     return Eigen::Vector3d(p.x(), p.y(), p.z());
   }
 
   /// Id of the point at position `i` in the tree's order.
-  std::uint64_t id(std::size_t i) const { return m_ids.empty() ? std::uint64_t(m_points[i].second) : m_ids[i]; }
+  std::uint64_t id(std::size_t i) const { return m_ids.empty() ? std::uint64_t(m_input[i]) : m_ids[i]; }
 
   /// The neighborhood of the point at position `query` (from 0 to `size()`).
   void find(std::size_t query, unsigned int k, double radius, Neighborhood& out, Scratch& scratch) const
   {
     typedef std::pair<double, std::size_t> Neighbor;
-    const Point& q = m_points[query].first;
+    const Point& q = m_points[query];
     std::vector<Neighbor>& ball = scratch.ball;
     out.points.clear();
     out.positions.clear();
@@ -229,12 +259,12 @@ public:
   template <typename Positions>
   void rebuild(std::size_t query, const Positions& positions, double radius, Neighborhood& out) const
   {
-    const Point& q = m_points[query].first;
+    const Point& q = m_points[query];
     out.points.clear();
     out.positions.clear();
     for(auto position : positions)
     {
-      const Point& p = m_points[position].first;
+      const Point& p = m_points[position];
       out.points.emplace_back(p.x() - q.x(), p.y() - q.y(), p.z() - q.z());
       out.positions.push_back(position);
     }
@@ -291,12 +321,12 @@ private:
     std::vector<std::pair<double, std::size_t> >* ball;
     const Neighbor_search* search;
     const Point* query;
-    void operator()(std::size_t i) const { ball->emplace_back(search->squared_distance(i, *query), i); }
+    void operator()(std::uint32_t i) const { ball->emplace_back(search->squared_distance(i, *query), i); }
   };
 
   // The squared distance from the point at position `i` to `q`, as the
   // k-neighbor search computes it, so that both searches agree on ties.
-  double squared_distance(std::size_t i, const Point& q) const
+  double squared_distance(std::uint32_t i, const Point& q) const
   {
     return m_distance.transformed_distance(q, i);
   }
@@ -306,13 +336,14 @@ private:
   {
     for(const auto& neighbor : neighbors)
     {
-      const Point& p = m_points[neighbor.second].first;
+      const Point& p = m_points[neighbor.second];
       out.points.emplace_back(p.x() - q.x(), p.y() - q.y(), p.z() - q.z());
       out.positions.push_back(neighbor.second);
     }
   }
 
-  std::vector<Indexed_point> m_points;   // along the Hilbert curve
+  std::vector<Point> m_points;           // along the Hilbert curve
+  std::vector<std::uint32_t> m_input;    // their positions in the input
   std::vector<std::uint64_t> m_ids;      // in the same order; empty: the input positions
   Point_map m_point_map;
   Traits m_traits;

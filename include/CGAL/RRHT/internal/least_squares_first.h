@@ -393,8 +393,8 @@ struct Least_squares_first_options
 
 /// Estimates the normals of the points of the context's search that it
 /// estimates, least squares first, in three passes over the cloud
-/// (`neighborhood_passes()`, each point's neighbors kept from its first
-/// pass to its third), and writes each normal, confidence and support to
+/// (`neighborhood_passes()`, each point's neighbors kept between its passes
+/// or found again), and writes each normal, confidence and support to
 /// the context's output:
 /// 1. at every point, the quadric of its neighborhood (`fit_quadric()`),
 ///    or of its side of a thin part (`fit_point_side()`), whose neighbors
@@ -437,10 +437,14 @@ void least_squares_first(const Pass_context& context, const Least_squares_first_
     double rms, radius, noise_near;
   };
 
+  auto find = [&](std::size_t i, std::vector<std::uint32_t>& neighbors, Scratch& scratch) {
+    search.find(i, settings.k, settings.neighbor_radius, scratch.neighborhood, scratch.search);
+    neighbors.assign(scratch.neighborhood.positions.begin(), scratch.neighborhood.positions.end());
+  };
+
   auto fit = [&](std::size_t i, std::vector<std::uint32_t>& neighbors, State& state, Scratch& scratch) {
-    Neighborhood& neighborhood = scratch.neighborhood;
-    search.find(i, settings.k, settings.neighbor_radius, neighborhood, scratch.search);
-    neighbors.assign(neighborhood.positions.begin(), neighborhood.positions.end());
+    find(i, neighbors, scratch);
+    const Neighborhood& neighborhood = scratch.neighborhood;
     state.radius = neighborhood.radius;
     if(options.supports)
       extents[i] = context.support_of(neighborhood);
@@ -528,7 +532,7 @@ void least_squares_first(const Pass_context& context, const Least_squares_first_
     write(i, e.normal, e.confidence, support);
   };
 
-  neighborhood_passes<ConcurrencyTag, State>(size, progress, make_scratch, fit, test, estimate);
+  neighborhood_passes<ConcurrencyTag, State>(size, progress, make_scratch, find, fit, test, estimate);
 }
 
 } // namespace internal

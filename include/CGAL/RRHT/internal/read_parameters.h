@@ -14,6 +14,7 @@
 #include <CGAL/RRHT/parameters.h>
 
 #include <CGAL/RRHT/internal/Bin_layout.h>
+#include <CGAL/RRHT/internal/Neighbor_search.h>
 #include <CGAL/RRHT/internal/Settings.h>
 #include <CGAL/RRHT/internal/check_parameters.h>
 
@@ -82,9 +83,8 @@ Parameters read_parameters(const PointRange& points, unsigned int k, const Named
   p.adaptive = choose_parameter(get_parameter(np, rrht_np::adaptive), true);
   p.refit = choose_parameter(get_parameter(np, rrht_np::refit), false);
   p.least_squares_first = choose_parameter(get_parameter(np, rrht_np::least_squares_first), true);
-  check(!p.least_squares_first ||
-          std::size_t(std::distance(points.begin(), points.end())) <= (std::numeric_limits<std::uint32_t>::max)(),
-        "least_squares_first handles at most 2^32 - 1 points at once: process larger clouds in tiles");
+  check(std::size_t(std::distance(points.begin(), points.end())) <= Neighbor_search::max_size(),
+        "at most 2^32 - 1 points at once: process larger clouds in tiles");
   return p;
 }
 
