@@ -548,8 +548,7 @@ struct Normal_at : Counted_use
   typedef std::uint64_t key_type;
   typedef SC::Vector_3 value_type;
   typedef value_type reference;
-  typedef boost::read_write_property_map_tag category;
-  friend value_type get(const Normal_at& map, std::uint64_t) { return ++*map.uses, value_type(0, 0, 1); }
+  typedef boost::writable_property_map_tag category;
   friend void put(const Normal_at& map, std::uint64_t, const value_type&) { ++*map.uses; }
 };
 
