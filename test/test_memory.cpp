@@ -74,7 +74,7 @@ template <typename ConcurrencyTag>
 void check_streamed_passes()
 {
   const std::size_t n = 40 * 4096 + 77;
-  auto neighbors_of = [n](std::size_t i) {
+  auto neighbors_of = [&](std::size_t i) {
     std::vector<std::uint32_t> neighbors{ std::uint32_t(i), std::uint32_t(n - 1 - i) };
     if(i > 0)
       neighbors.push_back(std::uint32_t(i - 1));
