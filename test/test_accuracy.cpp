@@ -788,3 +788,87 @@ TEST_CASE("Least squares first: a thin part whose other side tilts the principal
     CHECK(f.share_above < 0.06);
   }
 }
+
+TEST_CASE("Packed directions: read back within 0.005 degrees", "[least-squares-first]")
+{
+  using CGAL::RRHT::internal::Packed_direction;
+  std::mt19937_64 generator(10);
+  std::normal_distribution<double> gaussian(0, 1);
+  std::vector<Eigen::Vector3d> directions;
+  for(int axis = 0; axis < 3; ++axis)
+    for(double sign : { -1., 1. })
+      directions.push_back(sign * Eigen::Vector3d::Unit(axis));
+  // Next to the fold of the octahedron, z = 0.
+  for(int i = 0; i < 1000; ++i)
+    directions.push_back(Eigen::Vector3d(gaussian(generator), gaussian(generator), 1e-9 * gaussian(generator)));
+  for(int i = 0; i < 100000; ++i)
+    directions.push_back(Eigen::Vector3d(gaussian(generator), gaussian(generator), gaussian(generator)));
+  double largest = 0;
+  for(const Eigen::Vector3d& d : directions)
+  {
+    const Eigen::Vector3d unit = d.normalized(), back = Packed_direction(d).direction();
+    CHECK(std::abs(back.norm() - 1) < 1e-12);
+    largest = (std::max)(largest, std::atan2(unit.cross(back).norm(), unit.dot(back)) * 180 / CGAL_PI);
+  }
+  INFO("largest error " << largest << " degrees");
+  CHECK(largest < 0.005);
+}
+
+TEST_CASE("Neighbor planes: next to a sharp edge, the plane of the point's own face, refitted, and a plane across the "
+          "edge holds too little of the neighborhood",
+          "[accuracy][least-squares-first]")
+{
+  using namespace CGAL::RRHT::internal;
+  std::mt19937_64 generator(11);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  std::normal_distribution<double> noise(0, 0.005);
+  const Eigen::Vector3d up(0, 0, 1), side(1, 0, 0);
+  const double band = plane_band(0.005, 1);
+  // `from` turned by up to half a degree about a random axis.
+  auto turned = [&](const Eigen::Vector3d& from) {
+    const Eigen::Vector3d axis =
+      from.cross(Eigen::Vector3d(uniform(generator), uniform(generator), uniform(generator))).normalized();
+    return Eigen::Vector3d(Eigen::AngleAxisd(std::abs(uniform(generator)) * 0.5 * CGAL_PI / 180, axis) * from);
+  };
+  std::vector<Eigen::Vector3d> distinct;
+  for(int trial = 0; trial < 20; ++trial)
+  {
+    // The point at the origin on the face z = 0, x < 0.3; the face x = 0.3,
+    // z < 0 across the edge. Each neighbor's quadric normal is its face's,
+    // off by up to half a degree.
+    std::vector<Eigen::Vector3d> points{ Eigen::Vector3d::Zero() }, normals{ up };
+    std::vector<int> on_side{ 0 };
+    while(points.size() < 101)
+    {
+      const Eigen::Vector3d p(uniform(generator), uniform(generator), uniform(generator));
+      const bool across = p.x() > 0.3;
+      const Eigen::Vector3d q = across ? Eigen::Vector3d(0.3 + noise(generator), p.y(), -std::abs(p.z()))
+                                       : Eigen::Vector3d(p.x(), p.y(), noise(generator));
+      if(q.squaredNorm() > 1)
+        continue;
+      points.push_back(q), on_side.push_back(across);
+      normals.push_back(turned(across ? side : up));
+    }
+    std::vector<std::size_t> neighbors(points.size());
+    for(std::size_t j = 0; j < neighbors.size(); ++j)
+      neighbors[j] = j;
+    auto normal_of = [&](std::size_t j) { return normals[j]; };
+    const Scored_plane best = best_neighbor_plane(
+      points, neighbors, [](std::size_t j) { return j > 0; }, normal_of, band, distinct);
+    CHECK(std::abs(best.normal.dot(up)) > std::cos(0.5 * CGAL_PI / 180));
+    CHECK(best.share > 0.4);
+    CHECK(best.share < Neighbor_planes_thresholds::strong);
+    const Eigen::Vector3d refitted = refit_neighbor_plane(points, best.normal, band);
+    CHECK(std::abs(refitted.dot(up)) > std::cos(0.25 * CGAL_PI / 180));
+    // Only the other face's normals: its plane through the point holds a strip.
+    const Scored_plane across = best_neighbor_plane(
+      points, neighbors, [&](std::size_t j) { return on_side[j] == 1; }, normal_of, band, distinct);
+    CHECK(std::abs(across.normal.dot(side)) > std::cos(0.5 * CGAL_PI / 180));
+    CHECK(across.share < 0.2);
+    // No one-sheet neighbor: no plane.
+    const Scored_plane none = best_neighbor_plane(
+      points, neighbors, [](std::size_t) { return false; }, normal_of, band, distinct);
+    CHECK(none.normal == Eigen::Vector3d::Zero());
+    CHECK(none.share == 0);
+  }
+}

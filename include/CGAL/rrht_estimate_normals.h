@@ -254,7 +254,8 @@ namespace CGAL {
                        `UNIF`) instead, unless that normal's confidence is below the first one's and that with
                        `POINTS` has a higher confidence (spatial drawing resists the uneven densities of the two sides
                        of a sharp feature, but draws mostly outliers where they fill the ball).
-                       Each normal is thus the normal that one of these plain settings gives at the point, and the
+                       Each normal of the Hough transform is thus the normal that one of these plain settings gives
+                       at the point (with `least_squares_first`, a neighbor's plane may be taken instead), and the
                        result stays the same for any number of threads. The confidence written is that of the
                        normal kept. `sampling` is otherwise ignored. The thresholds are tuned on the benchmark's
                        noisy CAD shapes (0.2% noise, `k` = 100), where it has fewer normals off by more than 10
@@ -316,7 +317,12 @@ namespace CGAL {
                        Hough transform keeps to the point's side; on a fillet narrower than the neighborhood, it takes a
                        flat side. At the other points, as along sharp features, the normal is that of the Hough
                        transform with the other parameters (`adaptive` included), refitted with `refit` (with that first
-                       quartile as the noise deviation). The confidence written for a quadric's normal is measured on
+                       quartile as the noise deviation). With `adaptive`, the normals of the kept quadrics of the
+                       point's neighbors are planes through the point first, each scored by its neighbors within a band
+                       of 3 noise deviations (at least 1% of r); the best one, refitted to the neighbors in its band,
+                       is taken where they score at least 85% of the neighborhood, or where the cheap stage's normal is
+                       within 5 degrees of it, and the adaptive setting goes on elsewhere. The confidence written for a
+                       quadric's or such a plane's normal is measured on
                        the votes of the Hough transform's first stage at the point (the cheap stage with `adaptive`),
                        which runs where the quadric is kept only next to a point that failed the test, or if a
                        `confidence_map` is given. The passes are streamed along a Hilbert curve of the points: each

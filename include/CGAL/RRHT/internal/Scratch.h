@@ -43,6 +43,7 @@ struct Scratch
   std::vector<Triple> triples; // a batch of draws
   Plane_batch planes;          // and their planes
   std::vector<Candidate_normal> candidates;
+  std::vector<Eigen::Vector3d> hypotheses; // the distinct planes of the neighbors
   Refit_scratch refit;
 };
 

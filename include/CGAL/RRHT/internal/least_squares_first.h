@@ -13,6 +13,7 @@
 #define CGAL_RRHT_INTERNAL_LEAST_SQUARES_FIRST_H
 
 #include <CGAL/RRHT/internal/Neighbor_search.h>
+#include <CGAL/RRHT/internal/Packed_direction.h>
 #include <CGAL/RRHT/internal/Pass_context.h>
 #include <CGAL/RRHT/internal/Progress.h>
 #include <CGAL/RRHT/internal/Scratch.h>
@@ -20,6 +21,7 @@
 #include <CGAL/RRHT/internal/adaptive.h>
 #include <CGAL/RRHT/internal/confidence.h>
 #include <CGAL/RRHT/internal/estimate_normal.h>
+#include <CGAL/RRHT/internal/neighbor_planes.h>
 #include <CGAL/RRHT/internal/neighborhood_passes.h>
 #include <CGAL/RRHT/internal/refit_normal.h>
 
@@ -408,9 +410,14 @@ struct Least_squares_first_options
 ///    neighbor was rejected, the referee contests the quadric
 ///    (`contests_quadric()`) and prefers the Hough transform's first stage
 ///    (`prefers_hough()`); elsewhere, the Hough transform's, with
-///    `settings` or the adaptive `stages`, then refitted if asked.
-/// The confidence of a quadric's normal is measured on the votes of the
-/// Hough transform's first stage at the point (`confidence()`). The support
+///    `settings` or the adaptive `stages`, then refitted if asked. With
+///    the adaptive stages, the best of the planes of the point's one-sheet
+///    neighbors, refitted (`best_neighbor_plane()`), is taken instead where
+///    it holds most of the neighborhood, or where it agrees with the cheap
+///    stage (`Neighbor_planes_thresholds`).
+/// The confidence of a quadric's or a neighbor plane's normal is measured on
+/// the votes of the Hough transform's first stage at the point
+/// (`confidence()`). The support
 /// is the ball that holds the neighborhoods of the point's neighbors'
 /// neighbors, whose tests decide.
 template <typename ConcurrencyTag>
@@ -426,10 +433,14 @@ void least_squares_first(const Pass_context& context, const Least_squares_first_
   };
   const std::size_t size = search.size();
   // What the neighbors of a point read of its passes, for the whole cloud:
-  // its noise deviation (relative to its radius), its test and, for the
-  // supports, the balls that hold its neighborhood and its neighbors'.
-  std::vector<double> noise(size), extents(options.supports ? size : 0), reach(options.supports ? size : 0);
+  // its noise deviation (relative to its radius), its test, with the
+  // adaptive setting the normal of its quadric where it passed, and, for
+  // the supports, the balls that hold its neighborhood and its neighbors'.
+  // The noise is a relative deviation, which single precision keeps.
+  std::vector<float> noise(size);
+  std::vector<double> extents(options.supports ? size : 0), reach(options.supports ? size : 0);
   std::vector<unsigned char> one_sheet(size);
+  std::vector<Packed_direction> sheet_normals(options.stages ? size : 0);
   // What a point's own passes hand to each other.
   struct State
   {
@@ -453,7 +464,7 @@ void least_squares_first(const Pass_context& context, const Least_squares_first_
       scratch.refit);
     // The noise relative to the neighborhood's radius: where the density
     // varies, so does the scale of the neighborhoods a deviation is from.
-    state.normal = fit.normal, state.rms = fit.rms, noise[i] = fit.noise / neighborhood.radius;
+    state.normal = fit.normal, state.rms = fit.rms, noise[i] = float(fit.noise / neighborhood.radius);
   };
 
   // The noise around the point, its test and, for the supports, the ball
@@ -470,6 +481,8 @@ void least_squares_first(const Pass_context& context, const Least_squares_first_
       if(is_one_sheet(own.rms, state.noise_near, scratch.refit.own.size(), state.radius))
         one_sheet[i] = 1, state.normal = own.normal;
     }
+    if(options.stages && one_sheet[i])
+      sheet_normals[i] = Packed_direction(state.normal);
     if(options.supports)
     {
       double farthest = 0;
@@ -480,6 +493,22 @@ void least_squares_first(const Pass_context& context, const Least_squares_first_
   };
 
   const Settings& first_stage = options.stages ? options.stages->cheap : settings;
+  // The best of the planes of the point's one-sheet neighbors, refitted
+  // (`best_neighbor_plane()`, `refit_neighbor_plane()`), in its
+  // neighborhood found again; no plane where the noise around it is unknown.
+  auto neighbor_plane = [&](const std::vector<std::uint32_t>& neighbors, const State& state, Scratch& scratch) {
+    const Scored_plane none{ Eigen::Vector3d::Zero(), 0. };
+    const double band = plane_band(state.noise_near, state.radius);
+    if(!std::isfinite(band) || !(band * band >= 1e-300))
+      return none;
+    const std::vector<Eigen::Vector3d>& points = scratch.neighborhood.points;
+    const Scored_plane best = best_neighbor_plane(
+      points, neighbors, [&](std::uint32_t j) { return one_sheet[j] != 0; },
+      [&](std::uint32_t j) { return sheet_normals[j].direction(); }, band, scratch.hypotheses);
+    if(best.normal == Eigen::Vector3d::Zero())
+      return none;
+    return Scored_plane{ refit_neighbor_plane(points, best.normal, band), best.share };
+  };
   auto estimate = [&](std::size_t i, const std::vector<std::uint32_t>& neighbors, const State& state,
                       Scratch& scratch) {
     if(!context.estimated(i))
@@ -519,6 +548,26 @@ void least_squares_first(const Pass_context& context, const Least_squares_first_
         return;
       }
       e = options.stages ? recheck(id, cheap, *options.stages, scratch) : cheap;
+    }
+    else if(options.stages && neighborhood.points.size() >= 3 && neighborhood.radius >= 1e-300)
+    {
+      // The neighbors' plane where it holds most of the neighborhood, or
+      // where the cheap stage agrees with it; the adaptive stages elsewhere.
+      typedef Neighbor_planes_thresholds T;
+      const Scored_plane plane = neighbor_plane(neighbors, state, scratch);
+      const bool strong = plane.normal != Eigen::Vector3d::Zero() && plane.share >= T::strong;
+      if(strong && !options.confidences)
+      {
+        write(i, plane.normal, 0., support);
+        return;
+      }
+      const Estimated_normal cheap = estimate_normal_of_neighborhood(id, first_stage, scratch);
+      if(strong || (plane.normal != Eigen::Vector3d::Zero() && std::abs(plane.normal.dot(cheap.normal)) >= T::cos_agree))
+      {
+        write(i, plane.normal, confidence(scratch.candidates, plane.normal, first_stage.cos_cluster_angle), support);
+        return;
+      }
+      e = recheck(id, cheap, *options.stages, scratch);
     }
     else
       e = estimate_normal_of_found(id, settings, scratch, options.stages);

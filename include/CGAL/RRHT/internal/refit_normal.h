@@ -398,8 +398,8 @@ inline Eigen::Vector3d refit_normal(const std::vector<Eigen::Vector3d>& points, 
 /// deviations estimated at its neighbors. Near an edge or on a curved patch
 /// a point's own estimate grows with the other sheet or the curvature; its
 /// cleanest neighbors tell the noise of the scan.
-template <typename Positions>
-double noise_of_neighbors(const Positions& positions, const std::vector<double>& noise, std::vector<double>& work)
+template <typename Positions, typename Deviation>
+double noise_of_neighbors(const Positions& positions, const std::vector<Deviation>& noise, std::vector<double>& work)
 {
   work.clear();
   for(auto p : positions)
