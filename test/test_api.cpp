@@ -284,7 +284,10 @@ TEST_CASE("Every documented named-parameter form", "[api][parameters]")
   CHECK(run(base.adaptive(true)) != precise);
   CHECK(run(base.least_squares_first(true)) != precise);
   CHECK(run(base.refit(true)) != precise);
-  CHECK(run(params::extend(cgal_chain).refit(true)) != defaults);
+  // The refit applies where the Hough transform's normal is taken: with
+  // least squares first, at few of these 2000 points.
+  CHECK(run(params::extend(cgal_chain).least_squares_first(false).refit(true)) !=
+        run(params::extend(cgal_chain).least_squares_first(false)));
   // 7. An RRHT chain is a CGAL chain: CGAL's own functions take it.
   {
     Pair_cloud<SC> cloud = input;
