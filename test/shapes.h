@@ -92,6 +92,16 @@ inline double bounding_box_diagonal(const Cloud& cloud)
                    (hi[2] - lo[2]) * (hi[2] - lo[2]));
 }
 
+/// A vector of three draws of `distribution`, each in its own statement:
+/// the order of a call's arguments is unspecified, and a test's cloud must
+/// be the same with every compiler. The last coordinate is drawn first.
+template <typename Distribution>
+Vector random_vector(std::mt19937& rng, Distribution& distribution)
+{
+  const double z = distribution(rng), y = distribution(rng), x = distribution(rng);
+  return Vector(x, y, z);
+}
+
 /// Gaussian noise of standard deviation `percent` % of the bounding-box
 /// diagonal on each coordinate (paper, Section 6).
 inline void add_noise(Cloud& cloud, double percent, unsigned int seed)
@@ -101,7 +111,7 @@ inline void add_noise(Cloud& cloud, double percent, unsigned int seed)
   std::mt19937 rng(seed);
   std::normal_distribution<double> gauss(0., percent / 100. * bounding_box_diagonal(cloud));
   for(Sample& s : cloud)
-    s.point = s.point + Vector(gauss(rng), gauss(rng), gauss(rng));
+    s.point = s.point + random_vector(rng, gauss);
 }
 
 /// Appends `percent` % of outliers to the first `inliers` samples of the
@@ -120,7 +130,7 @@ inline void add_outliers(Cloud& cloud, double percent, double radius, unsigned i
   {
     Vector offset;
     do
-      offset = Vector(u(rng), u(rng), u(rng));
+      offset = random_vector(rng, u);
     while(offset.squared_length() > 1);
     Sample outlier;
     outlier.point = cloud[pick(rng)].point + radius * offset;
@@ -145,7 +155,8 @@ Cloud generate(std::size_t n, unsigned int seed, Sample_one sample)
 inline Cloud plane(std::size_t n, unsigned int seed)
 {
   return generate(n, seed, [](std::mt19937& rng, std::uniform_real_distribution<double>& u, Sample& s) {
-    s.point = Point(2 * u(rng) - 1, 2 * u(rng) - 1, 0);
+    const double y = 2 * u(rng) - 1, x = 2 * u(rng) - 1;
+    s.point = Point(x, y, 0);
     s.truth = Vector(0, 0, 1);
   });
 }
@@ -155,7 +166,7 @@ inline Cloud sphere(std::size_t n, unsigned int seed)
 {
   std::normal_distribution<double> g(0, 1);
   return generate(n, seed, [&](std::mt19937& rng, std::uniform_real_distribution<double>&, Sample& s) {
-    Vector v(g(rng), g(rng), g(rng));
+    Vector v = random_vector(rng, g);
     v = v / std::sqrt(v.squared_length());
     s.point = CGAL::ORIGIN + v;
     s.truth = v;

@@ -32,10 +32,7 @@ public:
     const double l1 = std::abs(d.x()) + std::abs(d.y()) + std::abs(d.z());
     double u = d.x() / l1, v = d.y() / l1;
     if(d.z() < 0)
-    {
-      const double fu = (1 - std::abs(v)) * sign(u), fv = (1 - std::abs(u)) * sign(v);
-      u = fu, v = fv;
-    }
+      fold(u, v);
     bits_ = (std::uint32_t(quantize(u)) << 16) | quantize(v);
   }
 
@@ -45,15 +42,19 @@ public:
     double u = unquantize(std::uint16_t(bits_ >> 16)), v = unquantize(std::uint16_t(bits_ & 0xffffu));
     const double z = 1 - std::abs(u) - std::abs(v);
     if(z < 0)
-    {
-      const double fu = (1 - std::abs(v)) * sign(u), fv = (1 - std::abs(u)) * sign(v);
-      u = fu, v = fv;
-    }
+      fold(u, v);
     return Eigen::Vector3d(u, v, z).normalized();
   }
 
 private:
   static double sign(double x) { return x < 0 ? -1. : 1.; }
+  // Folds the lower half of the octahedron over the upper one, and back:
+  // the map is its own inverse.
+  static void fold(double& u, double& v)
+  {
+    const double fu = (1 - std::abs(v)) * sign(u), fv = (1 - std::abs(u)) * sign(v);
+    u = fu, v = fv;
+  }
   static std::uint16_t quantize(double x) { return std::uint16_t(std::lround((x + 1) * 0.5 * 65535)); }
   static double unquantize(std::uint16_t q) { return double(q) / 65535 * 2 - 1; }
 

@@ -105,6 +105,13 @@ struct Least_squares_first_thresholds
   static constexpr std::size_t stack_fewest = 6;
   static constexpr double stack_gap = 0.1;
   static constexpr double stacked_others = 0.1;
+  /// The confidence of a normal kept without a vote (a quadric that no
+  /// rejected neighbor contests, a neighbor plane that holds most of the
+  /// neighborhood) is measured on the votes of `confidence_planes` triples
+  /// in `confidence_rotations` accumulator: it only has to rank the normal
+  /// among the others, and these are most of the points.
+  static constexpr std::size_t confidence_planes = 50;
+  static constexpr unsigned int confidence_rotations = 1;
 };
 
 /// Jet fitting's quadric at a point: its normal, and its residuals' root
@@ -416,8 +423,9 @@ struct Least_squares_first_options
 ///    it holds most of the neighborhood, or where it agrees with the cheap
 ///    stage (`Neighbor_planes_thresholds`).
 /// The confidence of a quadric's or a neighbor plane's normal is measured on
-/// the votes of the Hough transform's first stage at the point
-/// (`confidence()`). The support
+/// the votes of the Hough transform's first stage at the point where it
+/// ran, and elsewhere on a lighter vote (`confidence()`,
+/// `Least_squares_first_thresholds::confidence_planes`). The support
 /// is the ball that holds the neighborhoods of the point's neighbors'
 /// neighbors, whose tests decide.
 template <typename ConcurrencyTag>
@@ -493,6 +501,17 @@ void least_squares_first(const Pass_context& context, const Least_squares_first_
   };
 
   const Settings& first_stage = options.stages ? options.stages->cheap : settings;
+  Settings light = first_stage;
+  light.number_of_planes = (std::min)(light.number_of_planes, Least_squares_first_thresholds::confidence_planes);
+  light.number_of_rotations = (std::min)(light.number_of_rotations, Least_squares_first_thresholds::confidence_rotations);
+  // The confidence of `normal`, kept without a vote at the point whose id is
+  // `id`, where the confidences are asked: a light vote measures it.
+  auto confidence_of_kept = [&](std::uint64_t id, const Eigen::Vector3d& normal, Scratch& scratch) {
+    if(!options.confidences)
+      return 0.;
+    estimate_normal_of_neighborhood(id, light, scratch);
+    return confidence(scratch.candidates, normal, light.cos_cluster_angle);
+  };
   // The best of the planes of the point's one-sheet neighbors, refitted
   // (`best_neighbor_plane()`, `refit_neighbor_plane()`), in its
   // neighborhood found again; no plane where the noise around it is unknown.
@@ -532,17 +551,17 @@ void least_squares_first(const Pass_context& context, const Least_squares_first_
     search.rebuild(i, neighbors, state.radius, neighborhood);
     const Eigen::Vector3d referee = border ? referee_normal(neighborhood.points, scratch.refit) : Eigen::Vector3d::Zero();
     const bool contested = border && contests_quadric(referee, state.normal);
-    if(quadric && !contested && !options.confidences)
+    const std::uint64_t id = search.id(i);
+    if(quadric && !contested)
     {
-      write(i, state.normal, 0., support);
+      write(i, state.normal, confidence_of_kept(id, state.normal, scratch), support);
       return;
     }
-    const std::uint64_t id = search.id(i);
     Estimated_normal e;
     if(quadric)
     {
       const Estimated_normal cheap = estimate_normal_of_neighborhood(id, first_stage, scratch);
-      if(!contested || !prefers_hough(cheap.normal, state.normal, referee))
+      if(!prefers_hough(cheap.normal, state.normal, referee))
       {
         write(i, state.normal, confidence(scratch.candidates, state.normal, first_stage.cos_cluster_angle), support);
         return;
@@ -555,14 +574,13 @@ void least_squares_first(const Pass_context& context, const Least_squares_first_
       // where the cheap stage agrees with it; the adaptive stages elsewhere.
       typedef Neighbor_planes_thresholds T;
       const Scored_plane plane = neighbor_plane(neighbors, state, scratch);
-      const bool strong = plane.normal != Eigen::Vector3d::Zero() && plane.share >= T::strong;
-      if(strong && !options.confidences)
+      if(plane.normal != Eigen::Vector3d::Zero() && plane.share >= T::strong)
       {
-        write(i, plane.normal, 0., support);
+        write(i, plane.normal, confidence_of_kept(id, plane.normal, scratch), support);
         return;
       }
       const Estimated_normal cheap = estimate_normal_of_neighborhood(id, first_stage, scratch);
-      if(strong || (plane.normal != Eigen::Vector3d::Zero() && std::abs(plane.normal.dot(cheap.normal)) >= T::cos_agree))
+      if(plane.normal != Eigen::Vector3d::Zero() && std::abs(plane.normal.dot(cheap.normal)) >= T::cos_agree)
       {
         write(i, plane.normal, confidence(scratch.candidates, plane.normal, first_stage.cos_cluster_angle), support);
         return;
