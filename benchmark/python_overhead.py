@@ -86,6 +86,10 @@ def main():
 
     import cgal_rrht  # fail early, with Python's message, if it is not installed
 
+    # The commit the results are of: taken before they are written, which
+    # would mark it dirty.
+    commit = subprocess.run(["git", "-C", str(ROOT), "describe", "--always", "--dirty"], capture_output=True,
+                            text=True).stdout.strip() or "unknown"
     with tempfile.TemporaryDirectory() as scratch:
         points = noisy_cube(args.points)
         xyz, npy = os.path.join(scratch, "cloud.xyz"), os.path.join(scratch, "cloud.npy")
@@ -116,8 +120,6 @@ def main():
         writer.writerows(rows)
     command = "/usr/bin/python3 benchmark/python_overhead.py" + "".join(
         f" --{k} {v}" for k, v in (("points", args.points), ("rounds", args.rounds), ("threads", args.threads)))
-    commit = subprocess.run(["git", "-C", str(ROOT), "describe", "--always", "--dirty"], capture_output=True,
-                            text=True).stdout.strip() or "unknown"
     cpu = next((line.split(":", 1)[1].strip() for line in open("/proc/cpuinfo") if line.startswith("model name")),
                platform.processor())
     lines = [
