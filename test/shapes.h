@@ -155,6 +155,7 @@ Cloud generate(std::size_t n, unsigned int seed, Sample_one sample)
 inline Cloud plane(std::size_t n, unsigned int seed)
 {
   return generate(n, seed, [](std::mt19937& rng, std::uniform_real_distribution<double>& u, Sample& s) {
+    // Drawn as random_vector() draws: one statement each, the last first.
     const double y = 2 * u(rng) - 1, x = 2 * u(rng) - 1;
     s.point = Point(x, y, 0);
     s.truth = Vector(0, 0, 1);
