@@ -322,7 +322,8 @@ namespace CGAL {
                        point's neighbors are planes through the point first, each scored by its neighbors within a band
                        of 3 noise deviations (at least 1% of r); the best one, refitted to the neighbors in its band,
                        is taken where they score at least 85% of the neighborhood, or where the cheap stage's normal is
-                       within 5 degrees of it, and the adaptive setting goes on elsewhere. The confidence written for a
+                       within 5 degrees of it and the quadric's residuals have a root mean square of at least 0.1 r
+                       (across a crease), and the adaptive setting goes on elsewhere. The confidence written for a
                        quadric's or such a plane's normal is measured on
                        the votes of the Hough transform's first stage at the point (the cheap stage with `adaptive`)
                        where that stage ran, and elsewhere, if a `confidence_map` is given, on those of 50 triples in

@@ -28,7 +28,10 @@
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
 
+#include <boost/sort/pdqsort/pdqsort.hpp>
+
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -166,14 +169,16 @@ inline Quadric_fit fit_quadric(const std::vector<Eigen::Vector3d>& points, doubl
 }
 
 /// The offsets of the neighbors `points` (relative to the point) along
-/// `normal`, sorted, in `offsets`.
+/// `normal`, sorted, in `offsets`. Boost's branchless pdqsort: most points
+/// sort their offsets along a few directions, and the sorted values do not
+/// depend on the algorithm.
 inline void sorted_offsets(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& normal,
                            std::vector<double>& offsets)
 {
   offsets.resize(points.size());
   for(std::size_t i = 0; i < points.size(); ++i)
     offsets[i] = normal.dot(points[i]);
-  std::sort(offsets.begin(), offsets.end());
+  boost::sort::pdqsort_branchless(offsets.begin(), offsets.end());
 }
 
 /// The mean of `offsets` [first, last) and their standard deviation (0 for
@@ -214,6 +219,47 @@ inline bool own_sheet(const std::vector<Eigen::Vector3d>& points, const Eigen::V
   return true;
 }
 
+/// Whether the run of the offsets of the neighbors `points` (relative to the
+/// point, within `radius`) along `normal` about the point's, unbroken by a
+/// gap of `Least_squares_first_thresholds::stack_gap` times the radius
+/// (`own_stacked_sheet()`), surely leaves out fewer than `stacked_others` of
+/// them, found without sorting: offsets in bins next to each other, a
+/// little narrower than half the gap, are within the gap of each other, so
+/// the run holds at least the chain of nonempty bins about the point's. On
+/// one noisy sheet, that chain is nearly all the neighbors.
+inline bool run_holds_nearly_all(const std::vector<Eigen::Vector3d>& points, double radius,
+                                 const Eigen::Vector3d& normal)
+{
+  typedef Least_squares_first_thresholds T;
+  const double width = 0.49 * T::stack_gap * radius;
+  if(!(width > 0))
+    return false;
+  // Bins [b, b + 1) of offsets over the width, from -half to half; the run
+  // starts at the least nonnegative offset, or the greatest if none is.
+  constexpr int half = 32;
+  std::array<std::uint32_t, 2 * half> count{};
+  double start = std::numeric_limits<double>::infinity(), greatest = -start;
+  for(const Eigen::Vector3d& p : points)
+  {
+    const double o = normal.dot(p) / width, bin = std::floor(o);
+    if(bin >= -half && bin < half)
+      ++count[std::size_t(int(bin) + half)];
+    if(o >= 0 && o < start)
+      start = o;
+    greatest = (std::max)(greatest, o);
+  }
+  const double first = std::floor(std::isfinite(start) ? start : greatest);
+  if(!(first >= -half && first < half))
+    return false;
+  const int from = int(first) + half;
+  std::size_t chain = 0;
+  for(int b = from; b < 2 * half && count[std::size_t(b)] != 0; ++b)
+    chain += count[std::size_t(b)];
+  for(int b = from - 1; b >= 0 && count[std::size_t(b)] != 0; --b)
+    chain += count[std::size_t(b)];
+  return double(points.size() - chain) < T::stacked_others * double(points.size());
+}
+
 /// The neighbors `points` (relative to the point, within `radius`) on the
 /// point's own sheet, in `own`, where they hold a stack of parallel sheets
 /// normal to `normal` (fins, or the walls of narrow slots) that two groups
@@ -226,7 +272,7 @@ inline bool own_stacked_sheet(const std::vector<Eigen::Vector3d>& points, double
 {
   typedef Least_squares_first_thresholds T;
   const std::size_t size = points.size();
-  if(size < T::least_for_sheets)
+  if(size < T::least_for_sheets || run_holds_nearly_all(points, radius, normal))
     return false;
   sorted_offsets(points, normal, offsets);
   const std::size_t at =
@@ -571,7 +617,8 @@ void least_squares_first(const Pass_context& context, const Least_squares_first_
     else if(options.stages && neighborhood.points.size() >= 3 && neighborhood.radius >= 1e-300)
     {
       // The neighbors' plane where it holds most of the neighborhood, or
-      // where the cheap stage agrees with it; the adaptive stages elsewhere.
+      // where the cheap stage agrees with it across a crease; the adaptive
+      // stages elsewhere.
       typedef Neighbor_planes_thresholds T;
       const Scored_plane plane = neighbor_plane(neighbors, state, scratch);
       if(plane.normal != Eigen::Vector3d::Zero() && plane.share >= T::strong)
@@ -580,7 +627,8 @@ void least_squares_first(const Pass_context& context, const Least_squares_first_
         return;
       }
       const Estimated_normal cheap = estimate_normal_of_neighborhood(id, first_stage, scratch);
-      if(plane.normal != Eigen::Vector3d::Zero() && std::abs(plane.normal.dot(cheap.normal)) >= T::cos_agree)
+      if(plane.normal != Eigen::Vector3d::Zero() && std::abs(plane.normal.dot(cheap.normal)) >= T::cos_agree &&
+         state.rms >= T::crease * state.radius)
       {
         write(i, plane.normal, confidence(scratch.candidates, plane.normal, first_stage.cos_cluster_angle), support);
         return;

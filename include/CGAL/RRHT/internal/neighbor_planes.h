@@ -46,6 +46,13 @@ struct Neighbor_planes_thresholds
   /// the Hough transform's cheap stage: the vote found the same face, which
   /// the fit on all its points places better than a second vote would.
   static constexpr double cos_agree = 0.99619469809174553;
+  /// ... and where the quadric of the whole neighborhood misses its points
+  /// by at least `crease` times the radius (root mean square): across a
+  /// crease. Below that, the neighborhood is a sheet too curved for the
+  /// quadric, or a mild feature, where a neighbor's plane is turned from
+  /// the point's own by the curvature between them and the second vote is
+  /// nearer.
+  static constexpr double crease = 0.1;
 };
 
 /// The band of the planes at a point whose neighborhood has the radius
