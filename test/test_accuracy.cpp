@@ -728,18 +728,15 @@ TEST_CASE("Least squares first: in a stack of sheets, the point's own is told ap
   {
     using CGAL::RRHT::internal::run_holds_nearly_all;
     typedef CGAL::RRHT::internal::Least_squares_first_thresholds T;
+    using CGAL::RRHT::internal::run_about_point;
     // The run of the sorted offsets about the point's, as own_stacked_sheet() finds it.
     auto sorted_run = [&](const std::vector<Eigen::Vector3d>& points) {
       std::vector<double> offsets;
       for(const Eigen::Vector3d& p : points)
         offsets.push_back(p.z());
       std::sort(offsets.begin(), offsets.end());
-      std::size_t first = std::size_t(std::lower_bound(offsets.begin(), offsets.end(), 0.) - offsets.begin()), last = first + 1;
-      while(first > 0 && offsets[first] - offsets[first - 1] <= T::stack_gap)
-        --first;
-      while(last < offsets.size() && offsets[last] - offsets[last - 1] <= T::stack_gap)
-        ++last;
-      return last - first;
+      const std::pair<std::size_t, std::size_t> run = run_about_point(offsets, T::stack_gap);
+      return run.second - run.first;
     };
     std::size_t held = 0, trials = 0;
     for(double deviation : { 0.01, 0.1, 0.3 })

@@ -219,6 +219,22 @@ inline bool own_sheet(const std::vector<Eigen::Vector3d>& points, const Eigen::V
   return true;
 }
 
+/// The run [first, last) of the sorted, nonempty `offsets` about the
+/// point's, 0 (from the least nonnegative offset, or the greatest if none
+/// is), unbroken by a gap wider than `gap`.
+inline std::pair<std::size_t, std::size_t> run_about_point(const std::vector<double>& offsets, double gap)
+{
+  const std::size_t size = offsets.size();
+  std::size_t first =
+    (std::min)(std::size_t(std::lower_bound(offsets.begin(), offsets.end(), 0.) - offsets.begin()), size - 1);
+  std::size_t last = first + 1;
+  while(first > 0 && offsets[first] - offsets[first - 1] <= gap)
+    --first;
+  while(last < size && offsets[last] - offsets[last - 1] <= gap)
+    ++last;
+  return std::make_pair(first, last);
+}
+
 /// Whether the run of the offsets of the neighbors `points` (relative to the
 /// point, within `radius`) along `normal` about the point's, unbroken by a
 /// gap of `Least_squares_first_thresholds::stack_gap` times the radius
@@ -275,15 +291,8 @@ inline bool own_stacked_sheet(const std::vector<Eigen::Vector3d>& points, double
   if(size < T::least_for_sheets || run_holds_nearly_all(points, radius, normal))
     return false;
   sorted_offsets(points, normal, offsets);
-  const std::size_t at =
-    (std::min)(std::size_t(std::lower_bound(offsets.begin(), offsets.end(), 0.) - offsets.begin()), size - 1);
-  const double gap = T::stack_gap * radius;
-  std::size_t first = at, last = at + 1;
-  while(first > 0 && offsets[first] - offsets[first - 1] <= gap)
-    --first;
-  while(last < size && offsets[last] - offsets[last - 1] <= gap)
-    ++last;
-  const std::size_t run = last - first;
+  const std::pair<std::size_t, std::size_t> about = run_about_point(offsets, T::stack_gap * radius);
+  const std::size_t first = about.first, last = about.second, run = last - first;
   if(run < T::least_for_sheets / 2 || double(size - run) < T::stacked_others * double(size))
     return false;
   const double spread = mean_and_spread(offsets, first, last).second;
