@@ -24,10 +24,16 @@
 
 #include <Eigen/Geometry>
 
+#include <CGAL/Random.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <numeric>
+#include <random>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -233,4 +239,124 @@ TEST_CASE("Hough transform near an edge: with RRHT_Points, the side with fewer n
   CHECK(worst_angle_of_estimate_normal(n, n.normal_b, Sampling::POINTS, 20) < 3);
   CHECK(worst_angle_of_estimate_normal(n, n.normal_a, Sampling::CUBES, 20) < 3);
   CHECK(worst_angle_of_estimate_normal(n, n.normal_a, Sampling::UNIF, 20) < 3);
+}
+
+namespace {
+
+// The neighborhoods of Neighbor_search, found by going through all the
+// points: the input positions of the k + 1 nearest to `query` (or, with
+// `radius` > 0 and k = 0, of all within it), in order of squared distance
+// (as CGAL's distance computes it), then of id, and the distance to the
+// last one.
+std::pair<std::vector<std::size_t>, double> neighbors_by_all_points(const std::vector<Neighbor_search::Point>& points,
+                                                                    const std::vector<std::uint64_t>& ids,
+                                                                    std::size_t query, unsigned int k, double radius)
+{
+  const Neighbor_search::Point& q = points[query];
+  std::vector<std::tuple<double, std::uint64_t, std::size_t> > all;
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    double d = CGAL::square(q.x() - points[i].x());
+    d += CGAL::square(q.y() - points[i].y());
+    d += CGAL::square(q.z() - points[i].z());
+    if(radius == 0 || d <= radius * radius)
+      all.emplace_back(d, ids[i], i);
+  }
+  std::sort(all.begin(), all.end());
+  if(radius == 0 && all.size() > std::size_t(k) + 1)
+    all.resize(std::size_t(k) + 1);
+  std::vector<std::size_t> positions;
+  for(const auto& neighbor : all)
+    positions.push_back(std::get<2>(neighbor));
+  return std::make_pair(positions, radius > 0 ? radius : std::sqrt(std::get<0>(all.back())));
+}
+
+} // namespace
+
+// A k-neighborhood is first looked for in a ball a little wider than the
+// previous query's, and the ball of a radius search is collected from the
+// tree without CGAL's search: both give the neighborhoods of all the points,
+// ties at the last distance settled by the ids, whatever order the queries
+// come in.
+TEST_CASE("Neighbor search: the k nearest and the points in a ball, ties settled by the ids, in any order of queries",
+          "[neighbor_search]")
+{
+  CGAL::Random random(5);
+  std::vector<Neighbor_search::Point> noisy, grid, duplicated, clusters;
+  // The faces of a unit cube, a little noisy.
+  for(int i = 0; i < 2000; ++i)
+  {
+    double c[3] = { random.get_double(), random.get_double(), random.get_double() };
+    c[i % 3] = (i % 2) + 0.004 * (random.get_double() - 0.5);
+    noisy.emplace_back(c[0], c[1], c[2]);
+  }
+  // A folded grid: many neighbors at the same distance, the last one too.
+  for(int i = 0; i < 40; ++i)
+    for(int j = 0; j < 40; ++j)
+      grid.emplace_back(0.1 * i, 0.1 * j, i > 20 ? 0.05 * (i - 20) : 0.);
+  // Points given three times, and two clusters of very different densities:
+  // consecutive queries with neighborhoods of very different radii.
+  for(int i = 0; i < 600; ++i)
+  {
+    const Neighbor_search::Point p(random.get_double(), random.get_double(), random.get_double());
+    for(int copy = 0; copy < 3; ++copy)
+      duplicated.push_back(p);
+    clusters.emplace_back(random.get_double(), random.get_double(), 0.);
+    clusters.emplace_back(5 + 0.01 * random.get_double(), 0.01 * random.get_double(), 0.01 * random.get_double());
+  }
+  for(const std::vector<Neighbor_search::Point>* cloud : { &noisy, &grid, &duplicated, &clusters })
+  {
+    const std::vector<Neighbor_search::Point>& points = *cloud;
+    const std::size_t n = points.size();
+    // Ids in another order than the positions, so that they, not the
+    // positions, settle the ties.
+    std::vector<std::uint64_t> ids(n);
+    for(std::size_t i = 0; i < n; ++i)
+      ids[i] = (i * 7919) % n;
+    std::vector<std::uint32_t> input(n);
+    std::iota(input.begin(), input.end(), std::uint32_t(0));
+    const Neighbor_search search(std::vector<Neighbor_search::Point>(points), std::move(input), ids,
+                                 CGAL::Sequential_tag());
+    // Queries along the curve, as the passes make them, then in a random
+    // order; one scratch for all, with k changing.
+    std::vector<std::size_t> order(n);
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    std::vector<std::size_t> shuffled = order;
+    std::shuffle(shuffled.begin(), shuffled.end(), std::mt19937(7));
+    Neighbor_search::Scratch scratch;
+    Neighborhood found;
+    std::size_t checked = 0;
+    for(const std::vector<std::size_t>* queries : { &order, &shuffled })
+      for(unsigned int k : { 1u, 12u, 40u })
+        for(std::size_t j = 0; j < n; j += (queries == &order ? 1 : 3))
+        {
+          const std::size_t at = (*queries)[j];
+          search.find(at, k, 0., found, scratch);
+          const auto expected = neighbors_by_all_points(points, ids, search.input_index(at), k, 0.);
+          std::vector<std::size_t> positions;
+          for(std::size_t position : found.positions)
+            positions.push_back(search.input_index(position));
+          INFO("cloud of " << n << " points, k = " << k << ", query " << at);
+          REQUIRE(positions == expected.first);
+          REQUIRE(found.radius == expected.second);
+          ++checked;
+        }
+    // Balls, of radii that hold from a few points to a few dozen.
+    for(double radius : { 0.03, 0.12 })
+      for(std::size_t at = 0; at < n; at += 5)
+      {
+        search.find(at, 0, radius, found, scratch);
+        const auto expected = neighbors_by_all_points(points, ids, search.input_index(at), 0, radius);
+        if(expected.first.size() < 3)
+          continue; // the k nearest instead, as above
+        std::vector<std::size_t> positions;
+        for(std::size_t position : found.positions)
+          positions.push_back(search.input_index(position));
+        INFO("cloud of " << n << " points, ball of radius " << radius << ", query " << at);
+        REQUIRE(positions == expected.first);
+        REQUIRE(found.radius == radius);
+        ++checked;
+      }
+    CHECK(checked > n * 3);
+  }
 }

@@ -11,7 +11,6 @@
 #include <CGAL/Search_traits_3.h>
 #include <CGAL/Search_traits_adapter.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>
-#include <CGAL/Fuzzy_sphere.h>
 #include <CGAL/Kd_tree.h>
 #include <CGAL/property_map.h>
 #include <CGAL/hilbert_sort.h>
@@ -20,7 +19,6 @@
 #include <Eigen/Core>
 
 #include <boost/iterator/counting_iterator.hpp>
-#include <boost/iterator/function_output_iterator.hpp>
 #include <boost/sort/pdqsort/pdqsort.hpp>
 
 #include <algorithm>
@@ -82,7 +80,11 @@ bool has_finite_coordinates(const Point& p)
 /// The points, all with finite coordinates, are stored in the order of a Hilbert curve
 /// (`CGAL::hilbert_sort()`), and queries are made by position in that order:
 /// points close in space are close in memory, so consecutive queries walk
-/// the same branches of the tree and read the same cache lines. Positions
+/// the same branches of the tree and read the same cache lines. Consecutive
+/// queries also have neighborhoods of about the same radius: a k-neighborhood
+/// is first looked for among the points within a little more than the
+/// previous one's radius, collected from the tree without a queue, and CGAL's
+/// k-neighbor search runs only where that ball holds too few. Positions
 /// are 32-bit, as the indices of `CGAL::Point_set_3`: at most 2^32 - 1
 /// points (`max_size()`).
 class Neighbor_search
@@ -112,14 +114,25 @@ private:
   typedef CGAL::Kd_tree<Traits, Splitter, CGAL::Tag_true, CGAL::Tag_false> Tree;
   typedef CGAL::Distance_adapter<std::uint32_t, Point_map, CGAL::Euclidean_distance<Base_traits> > Distance;
   typedef CGAL::Orthogonal_k_neighbor_search<Traits, Distance, Splitter, Tree> K_neighbor_search;
-  typedef CGAL::Fuzzy_sphere<Traits> Sphere;
+  typedef std::pair<double, std::size_t> Neighbor; // squared distance, position
   static constexpr unsigned int leaf_size = 32;
+  // The ball first searched for a k-neighborhood: the previous one's radius
+  // times this. Nearly all queries find enough points in it, and few more.
+  static constexpr double radius_growth = 1.08;
 
 public:
   /// Per-thread buffer of the search, reused from one query to the next.
   struct Scratch
   {
-    std::vector<std::pair<double, std::size_t> > ball; // squared distance, index
+    std::vector<std::pair<double, std::size_t> > ball; // squared distance, position
+    // The last k-neighborhood found with this scratch: its query, its number
+    // of points (0 if it has fewer than asked for) and its squared radius.
+    std::size_t previous = (std::numeric_limits<std::size_t>::max)();
+    std::size_t previous_count = 0;
+    double previous_squared_radius = 0;
+    // The bucket sort's buffers (sort_nearest_first()).
+    std::vector<std::uint32_t> buckets, bucket_ends;
+    std::vector<std::pair<double, std::size_t> > sorted;
   };
 
   /// Takes `points`, at most `max_size()`, all with finite coordinates (the
@@ -206,7 +219,6 @@ public:
   /// The neighborhood of the point at position `query` (from 0 to `size()`).
   void find(std::size_t query, unsigned int k, double radius, Neighborhood& out, Scratch& scratch) const
   {
-    typedef std::pair<double, std::size_t> Neighbor;
     const Point& q = m_points[query];
     std::vector<Neighbor>& ball = scratch.ball;
     out.points.clear();
@@ -219,21 +231,15 @@ public:
       if(k == 0)
       {
         ball.clear();
-        m_tree->search(boost::make_function_output_iterator(Collect_with_distance{ &ball, this, &q }),
-                       Sphere(q, radius, 0., m_traits));
-        // The tree reports whole boxes it finds inside the sphere: the exact
-        // test, with the distance of the k-neighbor search.
-        ball.erase(std::remove_if(ball.begin(), ball.end(),
-                                  [&](const Neighbor& n) { return n.first > squared_radius; }),
-                   ball.end());
-        sort_nearest_first(ball);
+        collect(q, squared_radius, ball);
+        sort_nearest_first(ball, scratch);
       }
       else
       {
         // The k + 1 nearest, cut at the radius: when all are in the ball, the
         // ball capped to the k nearest, which shrinks to the ball through the
         // k-th neighbor; else the whole ball.
-        nearest(q, std::size_t(k) + 1, ball);
+        nearest(query, std::size_t(k) + 1, scratch);
         capped = ball.size() == std::size_t(k) + 1 && ball.back().first <= squared_radius;
         if(!capped)
           ball.erase(std::find_if(ball.begin(), ball.end(), [&](const Neighbor& n) { return n.first > squared_radius; }),
@@ -247,7 +253,7 @@ public:
       }
       k = (k == 0) ? 3 : k; // fewer than 3 points in the ball: k nearest neighbors
     }
-    nearest(q, std::size_t(k) + 1, ball);
+    nearest(query, std::size_t(k) + 1, scratch);
     add_all(ball, q, out);
     out.radius = ball.empty() ? 0. : std::sqrt(ball.back().first);
     out.complete = ball.size() == std::size_t(k) + 1;
@@ -272,13 +278,18 @@ public:
   }
 
 private:
-  // Sorts neighbors by squared distance, then by id. Boost's branchless
-  // pdqsort on the distances alone, the ids read only within the rare runs
-  // of equal distances: the sort is the price of neighborhoods that do not
-  // depend on the tree (benchmark/results/tiles/README.md).
-  void sort_nearest_first(std::vector<std::pair<double, std::size_t> >& neighbors) const
+  // Sorts neighbors by squared distance, then by id: the sort is the price
+  // of neighborhoods that do not depend on the tree
+  // (benchmark/results/tiles/README.md). The squared distances of points on
+  // a surface spread evenly from 0 to the largest: a bucket sort on them,
+  // about one neighbor a bucket, leaves a few neighbors to put in order by
+  // an insertion sort. Where a bucket holds many (points of a volume, or
+  // many at one distance), Boost's branchless pdqsort on the distances, the
+  // ids read only within the rare runs of equal distances.
+  void sort_nearest_first(std::vector<Neighbor>& neighbors, Scratch& scratch) const
   {
-    typedef std::pair<double, std::size_t> Neighbor;
+    if(bucket_sort(neighbors, scratch))
+      return;
     boost::sort::pdqsort_branchless(neighbors.begin(), neighbors.end(),
                                     [](const Neighbor& a, const Neighbor& b) { return a.first < b.first; });
     for(auto run = neighbors.begin(); run != neighbors.end();)
@@ -292,20 +303,104 @@ private:
     }
   }
 
-  // The `count` nearest points to `q` with their squared distances, nearest
-  // first (`sort_nearest_first()`). CGAL's search breaks ties at the last distance by the
-  // tree's layout: one more point is asked for, and while it is at that same
-  // distance, twice as many, until all the points at that distance are known
-  // and the ids choose among them.
-  void nearest(const Point& q, std::size_t count, std::vector<std::pair<double, std::size_t> >& out) const
+  // The bucket sort of sort_nearest_first(); false, `neighbors` untouched,
+  // where a bucket holds more than `crowded` of them.
+  bool bucket_sort(std::vector<Neighbor>& neighbors, Scratch& scratch) const
   {
+    constexpr std::uint32_t crowded = 12;
+    const std::size_t n = neighbors.size();
+    if(n <= crowded)
+      return false;
+    double largest = 0;
+    for(const Neighbor& neighbor : neighbors)
+      largest = (std::max)(largest, neighbor.first);
+    if(!(largest > 0))
+      return false;
+    // Buckets 0 to n - 1, in the order of the squared distances.
+    const double scale = double(n - 1) / largest;
+    std::vector<std::uint32_t>& bucket = scratch.buckets;
+    std::vector<std::uint32_t>& end = scratch.bucket_ends;
+    bucket.resize(n);
+    end.assign(n + 1, 0);
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      bucket[i] = std::uint32_t(neighbors[i].first * scale);
+      ++end[bucket[i] + 1];
+    }
+    std::uint32_t most = 0;
+    for(std::size_t b = 1; b <= n; ++b)
+      most = (std::max)(most, end[b]), end[b] += end[b - 1];
+    if(most > crowded)
+      return false;
+    std::vector<Neighbor>& sorted = scratch.sorted;
+    sorted.resize(n);
+    for(std::size_t i = 0; i < n; ++i)
+      sorted[end[bucket[i]]++] = neighbors[i];
+    auto before = [this](const Neighbor& a, const Neighbor& b) {
+      return a.first < b.first || (a.first == b.first && id(a.second) < id(b.second));
+    };
+    for(std::size_t i = 1; i < n; ++i)
+    {
+      const Neighbor moved = sorted[i];
+      std::size_t j = i;
+      for(; j > 0 && before(moved, sorted[j - 1]); --j)
+        sorted[j] = sorted[j - 1];
+      sorted[j] = moved;
+    }
+    neighbors.swap(sorted);
+    return true;
+  }
+
+  // The `count` nearest points to the point at position `query`, with
+  // their squared distances, nearest first (`sort_nearest_first()`), in
+  // `scratch.ball`. Any ball that holds at least `count` points holds them
+  // all, the points at the last distance too: first the ball a little wider
+  // than the previous neighborhood, then one that surely holds as many (the
+  // triangle inequality: the previous radius plus the step between the two
+  // queries), then CGAL's k-neighbor search.
+  void nearest(std::size_t query, std::size_t count, Scratch& scratch) const
+  {
+    std::vector<Neighbor>& ball = scratch.ball;
+    const Point& q = m_points[query];
+    bool found = false;
+    if(scratch.previous < size() && scratch.previous_count == count)
+    {
+      const double previous = std::sqrt(scratch.previous_squared_radius);
+      const double surely = previous + std::sqrt(squared_distance(std::uint32_t(scratch.previous), q));
+      for(double bound : { (std::min)(radius_growth * previous, surely), surely })
+      {
+        ball.clear();
+        collect(q, bound * bound, ball);
+        if(ball.size() >= count)
+        {
+          sort_nearest_first(ball, scratch);
+          ball.resize(count);
+          found = true;
+          break;
+        }
+      }
+    }
+    if(!found)
+      nearest_by_k_neighbor_search(q, count, scratch);
+    scratch.previous = query;
+    scratch.previous_count = ball.size() == count ? count : 0;
+    scratch.previous_squared_radius = ball.empty() ? 0. : ball.back().first;
+  }
+
+  // As nearest(), with CGAL's k-neighbor search, which breaks ties at the
+  // last distance by the tree's layout: one more point is asked for, and
+  // while it is at that same distance, twice as many, until all the points
+  // at that distance are known and the ids choose among them.
+  void nearest_by_k_neighbor_search(const Point& q, std::size_t count, Scratch& scratch) const
+  {
+    std::vector<Neighbor>& out = scratch.ball;
     for(std::size_t asked = count + 1;; asked *= 2)
     {
       out.clear();
       K_neighbor_search search(*m_tree, q, (unsigned int)((std::min)(asked, size())), 0, true, m_distance, false);
       for(const auto& neighbor : search)
         out.emplace_back(neighbor.second, neighbor.first);
-      sort_nearest_first(out);
+      sort_nearest_first(out, scratch);
       if(out.size() <= count)
         return;
       if(out.size() < asked || out.back().first > out[count - 1].first)
@@ -314,25 +409,65 @@ private:
     out.resize(count);
   }
 
-  // Output of the ball search: each index with its squared distance to the
-  // query (an assignable functor, as the tree copies output iterators).
-  struct Collect_with_distance
+  // Appends to `ball` the points within the squared distance `bound` of `q`,
+  // with their squared distances (squared_distance()), from the tree's
+  // root.
+  void collect(const Point& q, double bound, std::vector<Neighbor>& ball) const
   {
-    std::vector<std::pair<double, std::size_t> >* ball;
-    const Neighbor_search* search;
-    const Point* query;
-    void operator()(std::uint32_t i) const { ball->emplace_back(search->squared_distance(i, *query), i); }
-  };
+    const double c[3] = { q.x(), q.y(), q.z() };
+    double to_box[3] = { 0, 0, 0 };
+    // A subtree is left out only beyond the rounding of its box's distance.
+    collect(m_tree->root(), q, c, 0., to_box, bound, bound * (1 + 1e-9), ball);
+  }
 
-  // The squared distance from the point at position `i` to `q`, as the
-  // k-neighbor search computes it, so that both searches agree on ties.
+  // The same in the subtree `node`, whose box is at the distance `to_box[i]`
+  // from `c`, the coordinates of `q`, along the axis i, and at the squared
+  // distance `box`; the subtree is searched where `box` is at most `reach`.
+  // The extended nodes of the tree give the extent of each child along its
+  // parent's cutting axis, as in CGAL's own search.
+  void collect(typename Tree::Node_const_handle node, const Point& q, const double* c, double box, double* to_box,
+               double bound, double reach, std::vector<Neighbor>& ball) const
+  {
+    if(node->is_leaf())
+    {
+      typename Tree::Leaf_node_const_handle leaf = static_cast<typename Tree::Leaf_node_const_handle>(node);
+      for(auto it = leaf->begin(); it != leaf->end(); ++it)
+      {
+        const double d = squared_distance(*it, q);
+        if(d <= bound)
+          ball.emplace_back(d, *it);
+      }
+      return;
+    }
+    typename Tree::Internal_node_const_handle inner = static_cast<typename Tree::Internal_node_const_handle>(node);
+    const int axis = inner->cutting_dimension();
+    const double v = c[axis], before = to_box[axis];
+    const double to_lower = (std::max)((std::max)(0., v - inner->lower_high_value()), inner->lower_low_value() - v);
+    const double to_upper = (std::max)((std::max)(0., inner->upper_low_value() - v), v - inner->upper_high_value());
+    const double lower_box = box - before * before + to_lower * to_lower;
+    const double upper_box = box - before * before + to_upper * to_upper;
+    if(lower_box <= reach)
+    {
+      to_box[axis] = to_lower;
+      collect(inner->lower(), q, c, lower_box, to_box, bound, reach, ball);
+    }
+    if(upper_box <= reach)
+    {
+      to_box[axis] = to_upper;
+      collect(inner->upper(), q, c, upper_box, to_box, bound, reach, ball);
+    }
+    to_box[axis] = before;
+  }
+
+  // The squared distance from the point at position `i` to `q`, as CGAL's
+  // k-neighbor search computes it, so that all searches agree on ties.
   double squared_distance(std::uint32_t i, const Point& q) const
   {
     return m_distance.transformed_distance(q, i);
   }
 
   // Adds the `neighbors` to `out`, relative to the query `q`.
-  void add_all(const std::vector<std::pair<double, std::size_t> >& neighbors, const Point& q, Neighborhood& out) const
+  void add_all(const std::vector<Neighbor>& neighbors, const Point& q, Neighborhood& out) const
   {
     for(const auto& neighbor : neighbors)
     {
