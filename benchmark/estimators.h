@@ -14,9 +14,11 @@
 
 #include <CGAL/rrht_estimate_normals.h>
 #include <CGAL/rrht_orient_normals.h>
-// The components measured on their own by `neighbor_queries()`.
+// The components measured on their own by `rrht_neighborhoods()`.
 #include <CGAL/RRHT/internal/Neighbor_search.h>
 #include <CGAL/RRHT/internal/for_each_block.h>
+#include <CGAL/Point_set_processing_3/internal/Neighbor_query.h>
+#include <CGAL/for_each.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/compute_average_spacing.h>
 #include <CGAL/jet_estimate_normals.h>
@@ -213,16 +215,35 @@ inline Estimator rrht_defaults_with_confidence(const Neighborhood& n)
   return e;
 }
 
-/// The bare cost of RRHT's neighborhoods: what `rrht_estimate_normals()`
-/// does besides its Hough transforms. The copy of the cloud, the Hilbert sort
-/// and the kd-tree of `CGAL::RRHT::internal::Neighbor_search`, then the neighborhood of
-/// every point, over the same blocks and threads
-/// (`CGAL::RRHT::internal::for_each_block`), and nothing done with them.
-/// Writes no normals.
+/// CGAL's bare k-nearest-neighbor queries, as `CGAL::jet_estimate_normals()`
+/// makes them (`Point_set_processing_3::internal::Neighbor_query`): a
+/// kd-tree of the points, then `Orthogonal_k_neighbor_search` for the k + 1
+/// nearest of every point, in parallel, and nothing done with them. The
+/// yardstick of the default's time. Writes no normals.
 inline Estimator neighbor_queries(const Neighborhood& n)
 {
   Estimator e;
   e.name = "queries" + n.suffix();
+  e.estimate = [n](Cloud& cloud, unsigned int) {
+    typedef CGAL::Point_set_processing_3::internal::Neighbor_query<Kernel, Cloud&, Point_of_sample> Query;
+    const Query query(cloud, Point_of_sample());
+    CGAL::for_each<CGAL::Parallel_if_available_tag>(cloud, [&](const Sample& s) {
+      query.get_iterators(s.point, n.k, n.radius, boost::make_function_output_iterator([](const auto&) {}));
+      return true;
+    });
+  };
+  return e;
+}
+
+/// What RRHT's neighborhoods cost on their own: the copy of the cloud, the
+/// Hilbert sort and the kd-tree of `CGAL::RRHT::internal::Neighbor_search`,
+/// then the neighborhood of every point, over the same blocks and threads
+/// as `rrht_estimate_normals()` (`CGAL::RRHT::internal::for_each_block`), and
+/// nothing done with them. Writes no normals.
+inline Estimator rrht_neighborhoods(const Neighborhood& n)
+{
+  Estimator e;
+  e.name = "neighborhoods" + n.suffix();
   e.estimate = [n](Cloud& cloud, unsigned int) {
     typedef CGAL::RRHT::internal::Neighbor_search Search;
     std::vector<Search::Point> points;

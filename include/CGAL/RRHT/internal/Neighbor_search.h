@@ -127,6 +127,7 @@ public:
     std::vector<std::pair<double, std::size_t> > ball; // squared distance, position
     // The last k-neighborhood found with this scratch: its query, its number
     // of points (0 if it has fewer than asked for) and its squared radius.
+    // They make the next search faster, never different.
     std::size_t previous = (std::numeric_limits<std::size_t>::max)();
     std::size_t previous_count = 0;
     double previous_squared_radius = 0;
