@@ -265,6 +265,7 @@ void scaling(const Config& config)
     x.run(d, rrht(Rrht_setting::fast(), rrht_k));
     x.run(d, jet(paper_k));
     x.run(d, neighbor_queries(rrht_k));
+    x.run(d, rrht_neighborhoods(rrht_k));
   }
 }
 
