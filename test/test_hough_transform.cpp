@@ -341,6 +341,26 @@ TEST_CASE("Neighbor search: the k nearest and the points in a ball, ties settled
           REQUIRE(found.radius == expected.second);
           ++checked;
         }
+    // A query far from the previous one, in the other cluster: the ball
+    // that surely holds enough holds the whole cloud, and is given up.
+    if(cloud == &clusters)
+    {
+      std::size_t in_square = 0, in_cube = 0;
+      while(search.point(in_square).x() > 1)
+        ++in_square;
+      while(search.point(in_cube).x() < 4)
+        ++in_cube;
+      Neighbor_search::Scratch fresh;
+      for(std::size_t at : { in_cube, in_square })
+      {
+        search.find(at, 1, 0., found, fresh);
+        std::vector<std::size_t> positions;
+        for(std::size_t position : found.positions)
+          positions.push_back(search.input_index(position));
+        REQUIRE(positions == neighbors_by_all_points(points, ids, search.input_index(at), 1, 0.).first);
+      }
+      CHECK(fresh.ball.capacity() < n / 2);
+    }
     // Balls, of radii that hold from a few points to a few dozen.
     for(double radius : { 0.03, 0.12 })
       for(std::size_t at = 0; at < n; at += 5)

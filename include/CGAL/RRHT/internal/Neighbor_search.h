@@ -119,6 +119,10 @@ private:
   // The ball first searched for a k-neighborhood: the previous one's radius
   // times this. Nearly all queries find enough points in it, and few more.
   static constexpr double radius_growth = 1.08;
+  // A ball that holds more than this many times the points asked for is
+  // given up for CGAL's search, which then costs less; the balls collected
+  // for a k-neighborhood thus take bounded memory.
+  static constexpr std::size_t most_per_point_asked = 16;
 
 public:
   /// Per-thread buffer of the search, reused from one query to the next.
@@ -232,7 +236,7 @@ public:
       if(k == 0)
       {
         ball.clear();
-        collect(q, squared_radius, ball);
+        collect(q, squared_radius, (std::numeric_limits<std::size_t>::max)(), ball);
         sort_nearest_first(ball, scratch);
       }
       else
@@ -315,8 +319,8 @@ private:
     double largest = 0;
     for(const Neighbor& neighbor : neighbors)
       largest = (std::max)(largest, neighbor.first);
-    if(!(largest > 0))
-      return false;
+    if(!(largest > 0 && largest < std::numeric_limits<double>::infinity()))
+      return false; // all at one distance, or one too far to scale
     // Buckets 0 to n - 1, in the order of the squared distances.
     const double scale = double(n - 1) / largest;
     std::vector<std::uint32_t>& bucket = scratch.buckets;
@@ -358,7 +362,10 @@ private:
   // all, the points at the last distance too: first the ball a little wider
   // than the previous neighborhood, then one that surely holds as many (the
   // triangle inequality: the previous radius plus the step between the two
-  // queries), then CGAL's k-neighbor search.
+  // queries), then CGAL's k-neighbor search. A ball is given up once it
+  // holds `most_per_point_asked` times the points asked for: after a long
+  // step (a thread taking up another part of the curve), the ball that
+  // surely holds enough may hold most of the cloud.
   void nearest(std::size_t query, std::size_t count, Scratch& scratch) const
   {
     std::vector<Neighbor>& ball = scratch.ball;
@@ -367,18 +374,25 @@ private:
     if(scratch.previous < size() && scratch.previous_count == count)
     {
       const double previous = std::sqrt(scratch.previous_squared_radius);
-      const double surely = previous + std::sqrt(squared_distance(std::uint32_t(scratch.previous), q));
-      for(double bound : { (std::min)(radius_growth * previous, surely), surely })
+      const double step = std::sqrt(squared_distance(std::uint32_t(scratch.previous), q));
+      const std::size_t most = most_per_point_asked * count;
+      const double first = (std::min)(radius_growth * previous, previous + step);
+      const double bounds[2] = { first, previous + step > first ? previous + step : 0. };
+      for(double bound : bounds)
       {
+        if(!(bound > 0))
+          break;
         ball.clear();
-        collect(q, bound * bound, ball);
-        if(ball.size() >= count)
+        collect(q, bound * bound, most, ball);
+        if(ball.size() >= count && ball.size() <= most)
         {
           sort_nearest_first(ball, scratch);
           ball.resize(count);
           found = true;
           break;
         }
+        if(ball.size() > most)
+          break; // a wider ball holds more
       }
     }
     if(!found)
@@ -412,13 +426,13 @@ private:
 
   // Appends to `ball` the points within the squared distance `bound` of `q`,
   // with their squared distances (squared_distance()), from the tree's
-  // root.
-  void collect(const Point& q, double bound, std::vector<Neighbor>& ball) const
+  // root; stops once `ball` holds more than `most`.
+  void collect(const Point& q, double bound, std::size_t most, std::vector<Neighbor>& ball) const
   {
     const double c[3] = { q.x(), q.y(), q.z() };
     double to_box[3] = { 0, 0, 0 };
     // A subtree is left out only beyond the rounding of its box's distance.
-    collect(m_tree->root(), q, c, 0., to_box, bound, bound * (1 + 1e-9), ball);
+    collect(m_tree->root(), q, c, 0., to_box, bound, bound * (1 + 1e-9), most, ball);
   }
 
   // The same in the subtree `node`, whose box is at the distance `to_box[i]`
@@ -427,8 +441,10 @@ private:
   // The extended nodes of the tree give the extent of each child along its
   // parent's cutting axis, as in CGAL's own search.
   void collect(typename Tree::Node_const_handle node, const Point& q, const double* c, double box, double* to_box,
-               double bound, double reach, std::vector<Neighbor>& ball) const
+               double bound, double reach, std::size_t most, std::vector<Neighbor>& ball) const
   {
+    if(ball.size() > most)
+      return;
     if(node->is_leaf())
     {
       typename Tree::Leaf_node_const_handle leaf = static_cast<typename Tree::Leaf_node_const_handle>(node);
@@ -447,15 +463,16 @@ private:
     const double to_upper = (std::max)((std::max)(0., inner->upper_low_value() - v), v - inner->upper_high_value());
     const double lower_box = box - before * before + to_lower * to_lower;
     const double upper_box = box - before * before + to_upper * to_upper;
-    if(lower_box <= reach)
+    // Not left out where the distances overflow (NaN).
+    if(!(lower_box > reach))
     {
       to_box[axis] = to_lower;
-      collect(inner->lower(), q, c, lower_box, to_box, bound, reach, ball);
+      collect(inner->lower(), q, c, lower_box, to_box, bound, reach, most, ball);
     }
-    if(upper_box <= reach)
+    if(!(upper_box > reach))
     {
       to_box[axis] = to_upper;
-      collect(inner->upper(), q, c, upper_box, to_box, bound, reach, ball);
+      collect(inner->upper(), q, c, upper_box, to_box, bound, reach, most, ball);
     }
     to_box[axis] = before;
   }
