@@ -128,7 +128,7 @@ public:
   /// Per-thread buffer of the search, reused from one query to the next.
   struct Scratch
   {
-    std::vector<std::pair<double, std::size_t> > ball; // squared distance, position
+    std::vector<Neighbor> ball;
     // The last k-neighborhood found with this scratch: its query, its number
     // of points (0 if it has fewer than asked for) and its squared radius.
     // They make the next search faster, never different.
@@ -137,7 +137,7 @@ public:
     double previous_squared_radius = 0;
     // The bucket sort's buffers (sort_nearest_first()).
     std::vector<std::uint32_t> buckets, bucket_ends;
-    std::vector<std::pair<double, std::size_t> > sorted;
+    std::vector<Neighbor> sorted;
   };
 
   /// Takes `points`, at most `max_size()`, all with finite coordinates (the
@@ -283,29 +283,24 @@ public:
   }
 
 private:
-  // Sorts neighbors by squared distance, then by id: the sort is the price
-  // of neighborhoods that do not depend on the tree
+  // The order of neighborhoods: by squared distance, then by id.
+  bool nearer(const Neighbor& a, const Neighbor& b) const
+  {
+    return a.first < b.first || (a.first == b.first && id(a.second) < id(b.second));
+  }
+
+  // Sorts neighbors nearer first (`nearer()`): the sort is the price of
+  // neighborhoods that do not depend on the tree
   // (benchmark/results/tiles/README.md). The squared distances of points on
   // a surface spread evenly from 0 to the largest: a bucket sort on them,
   // about one neighbor a bucket, leaves a few neighbors to put in order by
   // an insertion sort. Where a bucket holds many (points of a volume, or
-  // many at one distance), Boost's branchless pdqsort on the distances, the
-  // ids read only within the rare runs of equal distances.
+  // many at one distance), Boost's pdqsort.
   void sort_nearest_first(std::vector<Neighbor>& neighbors, Scratch& scratch) const
   {
-    if(bucket_sort(neighbors, scratch))
-      return;
-    boost::sort::pdqsort_branchless(neighbors.begin(), neighbors.end(),
-                                    [](const Neighbor& a, const Neighbor& b) { return a.first < b.first; });
-    for(auto run = neighbors.begin(); run != neighbors.end();)
-    {
-      auto next = run + 1;
-      while(next != neighbors.end() && next->first == run->first)
-        ++next;
-      if(next - run > 1)
-        std::sort(run, next, [this](const Neighbor& a, const Neighbor& b) { return id(a.second) < id(b.second); });
-      run = next;
-    }
+    if(!bucket_sort(neighbors, scratch))
+      boost::sort::pdqsort(neighbors.begin(), neighbors.end(),
+                           [this](const Neighbor& a, const Neighbor& b) { return nearer(a, b); });
   }
 
   // The bucket sort of sort_nearest_first(); false, `neighbors` untouched,
@@ -341,14 +336,11 @@ private:
     sorted.resize(n);
     for(std::size_t i = 0; i < n; ++i)
       sorted[end[bucket[i]]++] = neighbors[i];
-    auto before = [this](const Neighbor& a, const Neighbor& b) {
-      return a.first < b.first || (a.first == b.first && id(a.second) < id(b.second));
-    };
     for(std::size_t i = 1; i < n; ++i)
     {
       const Neighbor moved = sorted[i];
       std::size_t j = i;
-      for(; j > 0 && before(moved, sorted[j - 1]); --j)
+      for(; j > 0 && nearer(moved, sorted[j - 1]); --j)
         sorted[j] = sorted[j - 1];
       sorted[j] = moved;
     }
