@@ -95,8 +95,10 @@ def main():
         np.savetxt(xyz, points, fmt="%.17g")
         np.save(npy, points)
         rows = []
-        for name, kwargs, flags in SETTINGS:
-            for round_ in range(args.rounds):
+        # Round by round, every setting in turn: a round's settings run back
+        # to back, so that the ratios between them pair neighboring runs.
+        for round_ in range(args.rounds):
+            for name, kwargs, flags in SETTINGS:
                 check = round_ == 0
                 cli_output = os.path.join(scratch, "cli.xyz")
                 python_output = os.path.join(scratch, "python.npy") if check else None
