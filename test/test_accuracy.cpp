@@ -847,6 +847,76 @@ TEST_CASE("Packed directions: read back within 0.005 degrees", "[least-squares-f
   CHECK(largest < 0.005);
 }
 
+TEST_CASE("The n-th smallest value: the value at n once sorted, whatever the order and the ties", "[least-squares-first]")
+{
+  using CGAL::RRHT::internal::nth_smallest;
+  std::mt19937_64 generator(12);
+  std::normal_distribution<double> gaussian(0, 1);
+  std::uniform_int_distribution<int> few(0, 3);
+  for(std::size_t size : { 1, 2, 3, 16, 17, 18, 33, 101, 102, 257, 1000 })
+    for(int order = 0; order < 6; ++order)
+    {
+      std::vector<double> values(size);
+      for(std::size_t i = 0; i < size; ++i)
+      {
+        const double x = double(i);
+        values[i] = order == 0 ? std::abs(gaussian(generator)) // residuals
+                  : order == 1 ? double(few(generator))        // many ties
+                  : order == 2 ? x                             // sorted
+                  : order == 3 ? -x                            // reversed
+                  : order == 4 ? 1.                            // all equal
+                               : (std::min)(x, double(size) - x); // up, then down
+      }
+      std::vector<double> sorted = values;
+      std::sort(sorted.begin(), sorted.end());
+      for(std::size_t n : { std::size_t(0), size / 4, size / 2, size - 1 })
+      {
+        std::vector<double> reordered = values;
+        INFO("size " << size << ", order " << order << ", n " << n);
+        CHECK(nth_smallest(reordered, n) == sorted[n]);
+        std::sort(reordered.begin(), reordered.end());
+        CHECK(reordered == sorted); // reordered, nothing lost
+      }
+    }
+}
+
+TEST_CASE("Neighbor planes and covariances: the same bits as the plain loops they replace", "[least-squares-first]")
+{
+  using namespace CGAL::RRHT::internal;
+  std::mt19937_64 generator(13);
+  std::normal_distribution<double> gaussian(0, 1);
+  auto random_vector = [&] { return Eigen::Vector3d(gaussian(generator), gaussian(generator), gaussian(generator)); };
+  std::vector<Eigen::Vector3d> points(101), normals(9);
+  for(Eigen::Vector3d& p : points)
+    p = 0.5 * random_vector();
+  for(Eigen::Vector3d& n : normals)
+    n = random_vector().normalized();
+  // Each score, the sum over the points in their order, one plane at a time.
+  const double band = 0.3, inverse = 1 / (band * band);
+  std::vector<double> distances, scores;
+  plane_scores(points, normals, band, distances, scores);
+  REQUIRE(scores.size() == normals.size());
+  for(std::size_t k = 0; k < normals.size(); ++k)
+  {
+    double score = 0;
+    for(const Eigen::Vector3d& p : points)
+    {
+      const double d = normals[k].dot(p);
+      score += (std::max)(0., 1 - d * d * inverse);
+    }
+    CHECK(scores[k] == score);
+  }
+  // The weighted covariance, as Eigen's outer products sum it.
+  Eigen::Matrix3d by_eigen = Eigen::Matrix3d::Zero(), by_entries = Eigen::Matrix3d::Zero();
+  for(const Eigen::Vector3d& p : points)
+  {
+    const double w = std::abs(gaussian(generator));
+    by_eigen += w * p * p.transpose();
+    add_outer_product(by_entries, w * p, p);
+  }
+  CHECK(by_entries == by_eigen);
+}
+
 TEST_CASE("Neighbor planes: next to a sharp edge, the plane of the point's own face, refitted, and a plane across the "
           "edge holds too little of the neighborhood",
           "[accuracy][least-squares-first]")
@@ -863,7 +933,7 @@ TEST_CASE("Neighbor planes: next to a sharp edge, the plane of the point's own f
       from.cross(Eigen::Vector3d(uniform(generator), uniform(generator), uniform(generator))).normalized();
     return Eigen::Vector3d(Eigen::AngleAxisd(std::abs(uniform(generator)) * 0.5 * CGAL_PI / 180, axis) * from);
   };
-  std::vector<Eigen::Vector3d> distinct;
+  Neighbor_planes_scratch scratch;
   for(int trial = 0; trial < 20; ++trial)
   {
     // The point at the origin on the face z = 0, x < 0.3; the face x = 0.3,
@@ -887,20 +957,20 @@ TEST_CASE("Neighbor planes: next to a sharp edge, the plane of the point's own f
       neighbors[j] = j;
     auto normal_of = [&](std::size_t j) { return normals[j]; };
     const Scored_plane best = best_neighbor_plane(
-      points, neighbors, [](std::size_t j) { return j > 0; }, normal_of, band, distinct);
+      points, neighbors, [](std::size_t j) { return j > 0; }, normal_of, band, scratch);
     CHECK(std::abs(best.normal.dot(up)) > std::cos(0.5 * CGAL_PI / 180));
     CHECK(best.share > 0.4);
     CHECK(best.share < Neighbor_planes_thresholds::strong);
-    const Eigen::Vector3d refitted = refit_neighbor_plane(points, best.normal, band);
+    const Eigen::Vector3d refitted = refit_neighbor_plane(points, best.normal, band, scratch);
     CHECK(std::abs(refitted.dot(up)) > std::cos(0.25 * CGAL_PI / 180));
     // Only the other face's normals: its plane through the point holds a strip.
     const Scored_plane across = best_neighbor_plane(
-      points, neighbors, [&](std::size_t j) { return on_side[j] == 1; }, normal_of, band, distinct);
+      points, neighbors, [&](std::size_t j) { return on_side[j] == 1; }, normal_of, band, scratch);
     CHECK(std::abs(across.normal.dot(side)) > std::cos(0.5 * CGAL_PI / 180));
     CHECK(across.share < 0.2);
     // No one-sheet neighbor: no plane.
     const Scored_plane none = best_neighbor_plane(
-      points, neighbors, [](std::size_t) { return false; }, normal_of, band, distinct);
+      points, neighbors, [](std::size_t) { return false; }, normal_of, band, scratch);
     CHECK(none.normal == Eigen::Vector3d::Zero());
     CHECK(none.share == 0);
   }

@@ -11,6 +11,7 @@
 #include <CGAL/RRHT/internal/Cube_weights.h>
 #include <CGAL/RRHT/internal/Cubes_sampler.h>
 #include <CGAL/RRHT/internal/Neighbor_search.h>
+#include <CGAL/RRHT/internal/neighbor_planes.h>
 #include <CGAL/RRHT/internal/Plane_batch.h>
 #include <CGAL/RRHT/internal/Points_sampler.h>
 #include <CGAL/RRHT/internal/Triple.h>
@@ -43,7 +44,7 @@ struct Scratch
   std::vector<Triple> triples; // a batch of draws
   Plane_batch planes;          // and their planes
   std::vector<Candidate_normal> candidates;
-  std::vector<Eigen::Vector3d> hypotheses; // the distinct planes of the neighbors
+  Neighbor_planes_scratch neighbor_planes;
   Refit_scratch refit;
 };
 

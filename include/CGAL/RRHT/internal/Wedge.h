@@ -9,6 +9,8 @@
 #ifndef CGAL_RRHT_INTERNAL_WEDGE_H
 #define CGAL_RRHT_INTERNAL_WEDGE_H
 
+#include <CGAL/RRHT/internal/outer_product.h>
+
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
 
@@ -168,7 +170,10 @@ private:
       Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
       for(std::size_t t = 0; t < points.size(); ++t)
         if(face[t] == which)
-          covariance += (points[t] - centroid) * (points[t] - centroid).transpose();
+        {
+          const Eigen::Vector3d q = points[t] - centroid;
+          add_outer_product(covariance, q, q);
+        }
       const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
       normal = solver.eigenvectors().col(0);
       squared_deviation = (std::max)(0., solver.eigenvalues()(0));

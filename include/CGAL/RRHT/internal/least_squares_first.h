@@ -578,10 +578,10 @@ void least_squares_first(const Pass_context& context, const Least_squares_first_
     const std::vector<Eigen::Vector3d>& points = scratch.neighborhood.points;
     const Scored_plane best = best_neighbor_plane(
       points, neighbors, [&](std::uint32_t j) { return one_sheet[j] != 0; },
-      [&](std::uint32_t j) { return sheet_normals[j].direction(); }, band, scratch.hypotheses);
+      [&](std::uint32_t j) { return sheet_normals[j].direction(); }, band, scratch.neighbor_planes);
     if(best.normal == Eigen::Vector3d::Zero())
       return none;
-    return Scored_plane{ refit_neighbor_plane(points, best.normal, band), best.share };
+    return Scored_plane{ refit_neighbor_plane(points, best.normal, band, scratch.neighbor_planes), best.share };
   };
   auto estimate = [&](std::size_t i, const std::vector<std::uint32_t>& neighbors, const State& state,
                       Scratch& scratch) {

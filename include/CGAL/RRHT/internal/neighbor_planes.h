@@ -12,6 +12,8 @@
 #ifndef CGAL_RRHT_INTERNAL_NEIGHBOR_PLANES_H
 #define CGAL_RRHT_INTERNAL_NEIGHBOR_PLANES_H
 
+#include <CGAL/RRHT/internal/outer_product.h>
+
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
 
@@ -63,20 +65,40 @@ inline double plane_band(double noise, double radius)
   return (std::max)(T::band_noise * noise, T::band_radius * radius);
 }
 
-/// The score of the plane through the point of normal `normal`: the sum,
-/// over the neighbors `points` (relative to the point), of
-/// 1 - (d / `band`)^2 where their distance d to the plane is below the band.
-inline double plane_score(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& normal, double band)
+/// The scores of the planes through the point of unit normals `normals`,
+/// in `scores`: for each, the sum, over the neighbors `points` (relative to
+/// the point), of 1 - (d / `band`)^2 where their distance d to the plane is
+/// below the band, in the order of the points. The points are the outer
+/// loop, so that the sums of the planes advance side by side, in a loop
+/// that the compiler vectorizes, rather than each waiting on its last
+/// addition; `distances` holds a point's distances to the planes.
+inline void plane_scores(const std::vector<Eigen::Vector3d>& points, const std::vector<Eigen::Vector3d>& normals,
+                         double band, std::vector<double>& distances, std::vector<double>& scores)
 {
   const double inverse = 1 / (band * band);
-  double score = 0;
+  const std::size_t planes = normals.size();
+  distances.resize(planes);
+  scores.assign(planes, 0.);
+  double* const d = distances.data();
+  double* const score = scores.data();
   for(const Eigen::Vector3d& p : points)
   {
-    const double d = normal.dot(p);
-    score += (std::max)(0., 1 - d * d * inverse);
+    for(std::size_t k = 0; k < planes; ++k)
+      d[k] = normals[k].dot(p);
+    for(std::size_t k = 0; k < planes; ++k)
+      score[k] += (std::max)(0., 1 - d[k] * d[k] * inverse);
   }
-  return score;
 }
+
+/// The working memory of `best_neighbor_plane()` and
+/// `refit_neighbor_plane()`, reused from point to point.
+struct Neighbor_planes_scratch
+{
+  std::vector<Eigen::Vector3d> distinct; // the distinct planes of the neighbors
+  std::vector<double> distances;         // a point's distances to them
+  std::vector<double> scores;            // their scores
+  std::vector<double> weights;           // the weights of the points in a refit
+};
 
 /// A plane hypothesis and the share of the neighborhood it scores.
 struct Scored_plane
@@ -85,15 +107,16 @@ struct Scored_plane
   double share;
 };
 
-/// The best scored (`plane_score()`) of the planes through the point whose
+/// The best scored (`plane_scores()`) of the planes through the point whose
 /// normals are the unit vectors `normal_of(j)` of the neighbors j in
 /// `neighbors` where `use(j)`, nearest first, those within
 /// `Neighbor_planes_thresholds::cos_distinct` of one before left out
-/// (`distinct` holds the others).
+/// (`scratch.distinct` holds the others); the first of the best, if several are.
 template <typename Neighbors, typename Use, typename Normal_of>
 Scored_plane best_neighbor_plane(const std::vector<Eigen::Vector3d>& points, const Neighbors& neighbors, Use use,
-                                 Normal_of normal_of, double band, std::vector<Eigen::Vector3d>& distinct)
+                                 Normal_of normal_of, double band, Neighbor_planes_scratch& scratch)
 {
+  std::vector<Eigen::Vector3d>& distinct = scratch.distinct;
   distinct.clear();
   for(auto j : neighbors)
   {
@@ -105,14 +128,12 @@ Scored_plane best_neighbor_plane(const std::vector<Eigen::Vector3d>& points, con
        }))
       distinct.push_back(n);
   }
+  plane_scores(points, distinct, band, scratch.distances, scratch.scores);
   Scored_plane best{ Eigen::Vector3d::Zero(), 0. };
   double best_score = -1;
-  for(const Eigen::Vector3d& n : distinct)
-  {
-    const double score = plane_score(points, n, band);
-    if(score > best_score)
-      best_score = score, best.normal = n;
-  }
+  for(std::size_t k = 0; k < distinct.size(); ++k)
+    if(scratch.scores[k] > best_score)
+      best_score = scratch.scores[k], best.normal = distinct[k];
   if(!points.empty() && best_score > 0)
     best.share = best_score / double(points.size());
   return best;
@@ -125,29 +146,32 @@ Scored_plane best_neighbor_plane(const std::vector<Eigen::Vector3d>& points, con
 /// about their weighted mean, which the next distances are taken from. The
 /// null vector where no point lies within the band.
 inline Eigen::Vector3d refit_neighbor_plane(const std::vector<Eigen::Vector3d>& points, Eigen::Vector3d normal,
-                                            double band)
+                                            double band, Neighbor_planes_scratch& scratch)
 {
   const double inverse = 1 / (band * band);
+  std::vector<double>& weights = scratch.weights;
+  weights.resize(points.size());
   Eigen::Vector3d center = Eigen::Vector3d::Zero();
   for(int refit = 0; refit < Neighbor_planes_thresholds::refits; ++refit)
   {
-    auto weight = [&](const Eigen::Vector3d& p) {
-      const double d = normal.dot(p - center), u = 1 - d * d * inverse;
-      return u > 0 ? u * u : 0.;
-    };
     Eigen::Vector3d mean = Eigen::Vector3d::Zero();
     double sum = 0;
-    for(const Eigen::Vector3d& p : points)
+    for(std::size_t i = 0; i < points.size(); ++i)
     {
-      const double w = weight(p);
-      mean += w * p, sum += w;
+      const double d = normal.dot(points[i] - center), u = 1 - d * d * inverse;
+      const double w = u > 0 ? u * u : 0.;
+      weights[i] = w;
+      mean += w * points[i], sum += w;
     }
     if(!(sum > 0))
       return Eigen::Vector3d::Zero();
     mean /= sum;
     Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-    for(const Eigen::Vector3d& p : points)
-      covariance += weight(p) * (p - mean) * (p - mean).transpose();
+    for(std::size_t i = 0; i < points.size(); ++i)
+    {
+      const Eigen::Vector3d q = points[i] - mean;
+      add_outer_product(covariance, weights[i] * q, q);
+    }
     normal = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance).eigenvectors().col(0);
     center = mean;
   }

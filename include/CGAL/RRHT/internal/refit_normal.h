@@ -13,6 +13,8 @@
 #ifndef CGAL_RRHT_INTERNAL_REFIT_NORMAL_H
 #define CGAL_RRHT_INTERNAL_REFIT_NORMAL_H
 
+#include <CGAL/RRHT/internal/nth_smallest.h>
+#include <CGAL/RRHT/internal/outer_product.h>
 #include <CGAL/number_type_config.h>
 
 #include <Eigen/Cholesky>
@@ -75,9 +77,7 @@ struct Refit_scratch
 /// The first quartile of `values`, which it reorders.
 inline double first_quartile(std::vector<double>& values)
 {
-  const auto quartile = values.begin() + std::ptrdiff_t(values.size() / 4);
-  std::nth_element(values.begin(), quartile, values.end());
-  return *quartile;
+  return nth_smallest(values, values.size() / 4);
 }
 
 /// The split of the sorted `values` (two or more) into two contiguous
@@ -206,7 +206,10 @@ Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> principal_axes(const std::vector<
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
   for(std::size_t i = 0; i < points.size(); ++i)
     if(use(i))
-      covariance += (points[i] - center) * (points[i] - center).transpose();
+    {
+      const Eigen::Vector3d q = points[i] - center;
+      add_outer_product(covariance, q, q);
+    }
   return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance);
 }
 
