@@ -439,13 +439,19 @@ private:
       return;
     if(node->is_leaf())
     {
+      // Each point written, and kept if within the bound: whether a point
+      // of a leaf that the ball cuts is in it is random, a branch would be
+      // mispredicted.
       typename Tree::Leaf_node_const_handle leaf = static_cast<typename Tree::Leaf_node_const_handle>(node);
+      std::size_t kept = ball.size();
+      ball.resize(kept + leaf->size());
       for(auto it = leaf->begin(); it != leaf->end(); ++it)
       {
         const double d = squared_distance(*it, q);
-        if(d <= bound)
-          ball.emplace_back(d, *it);
+        ball[kept] = Neighbor(d, *it);
+        kept += (d <= bound);
       }
+      ball.resize(kept);
       return;
     }
     typename Tree::Internal_node_const_handle inner = static_cast<typename Tree::Internal_node_const_handle>(node);
