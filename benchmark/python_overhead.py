@@ -74,6 +74,12 @@ def time_python(npy, threads, kwargs, output=None):
     return float(subprocess.run(command, capture_output=True, text=True, check=True).stdout)
 
 
+def ratio_cells(ratios, target):
+    """The cells of a ratio: the median of the round-by-round ratios (min-max), and whether it meets the target."""
+    ratio = statistics.median(ratios)
+    return f"{ratio:.3f} ({min(ratios):.3f}-{max(ratios):.3f}) | {'yes' if ratio <= target else 'no'}"
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--points", type=int, default=1000000)
@@ -141,10 +147,8 @@ def main():
     for name, _, _ in SETTINGS:
         mine = [r for r in rows if r["setting"] == name]
         ratios = [r["python_s"] / r["cpp_s"] for r in mine]
-        ratio = statistics.median(ratios)
         lines.append(f"| {name} | {statistics.median(r['cpp_s'] for r in mine):.3f} | "
-                     f"{statistics.median(r['python_s'] for r in mine):.3f} | {ratio:.3f} "
-                     f"({min(ratios):.3f}-{max(ratios):.3f}) | {'yes' if ratio <= TARGET_OVERHEAD else 'no'} |")
+                     f"{statistics.median(r['python_s'] for r in mine):.3f} | {ratio_cells(ratios, TARGET_OVERHEAD)} |")
     # What the confidences cost: the same language, the same round.
     without = {r["round"]: r for r in rows if r["setting"] == WITHOUT_CONFIDENCES}
     costs = {language: [r[key] / without[r["round"]][key] for r in rows if r["setting"] == WITH_CONFIDENCES]
@@ -152,9 +156,7 @@ def main():
     lines += ["", f"What the confidences cost: each call's time with them over its time without, in the same round "
               f"(target: at most {TARGET_CONFIDENCE_COST}).", "", "| call | with ÷ without | target met |", "|---|---|---|"]
     for language, ratios in costs.items():
-        ratio = statistics.median(ratios)
-        lines.append(f"| {language} | {ratio:.3f} ({min(ratios):.3f}-{max(ratios):.3f}) | "
-                     f"{'yes' if ratio <= TARGET_CONFIDENCE_COST else 'no'} |")
+        lines.append(f"| {language} | {ratio_cells(ratios, TARGET_CONFIDENCE_COST)} |")
     (args.out / "README.md").write_text("\n".join(lines) + "\n")
     print("\n".join(lines))
 
