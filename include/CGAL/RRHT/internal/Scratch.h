@@ -11,12 +11,12 @@
 #include <CGAL/RRHT/internal/Cube_weights.h>
 #include <CGAL/RRHT/internal/Cubes_sampler.h>
 #include <CGAL/RRHT/internal/Neighbor_search.h>
-#include <CGAL/RRHT/internal/neighbor_planes.h>
 #include <CGAL/RRHT/internal/Plane_batch.h>
 #include <CGAL/RRHT/internal/Points_sampler.h>
 #include <CGAL/RRHT/internal/Triple.h>
 #include <CGAL/RRHT/internal/Unif_sampler.h>
 #include <CGAL/RRHT/internal/aggregate.h>
+#include <CGAL/RRHT/internal/neighbor_planes.h>
 #include <CGAL/RRHT/internal/refit_normal.h>
 
 #include <Eigen/Core>

@@ -9,7 +9,7 @@
 #ifndef CGAL_RRHT_INTERNAL_WEDGE_H
 #define CGAL_RRHT_INTERNAL_WEDGE_H
 
-#include <CGAL/RRHT/internal/outer_product.h>
+#include <CGAL/RRHT/internal/principal_axes.h>
 
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
@@ -158,25 +158,13 @@ private:
     Plane() = default;
     Plane(const std::vector<Eigen::Vector3d>& points, const std::vector<int>& face, int which)
     {
-      for(std::size_t t = 0; t < points.size(); ++t)
-        if(face[t] == which)
-        {
-          centroid += points[t];
-          ++size;
-        }
+      const Principal_axes principal = principal_axes(points, [&](std::size_t t) { return face[t] == which; });
+      size = principal.count;
       if(size == 0)
         return;
-      centroid /= double(size);
-      Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-      for(std::size_t t = 0; t < points.size(); ++t)
-        if(face[t] == which)
-        {
-          const Eigen::Vector3d q = points[t] - centroid;
-          add_outer_product(covariance, q, q);
-        }
-      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
-      normal = solver.eigenvectors().col(0);
-      squared_deviation = (std::max)(0., solver.eigenvalues()(0));
+      centroid = principal.centroid;
+      normal = principal.axes.eigenvectors().col(0);
+      squared_deviation = (std::max)(0., principal.axes.eigenvalues()(0));
     }
 
     double distance(const Eigen::Vector3d& p) const { return std::abs((p - centroid).dot(normal)); }

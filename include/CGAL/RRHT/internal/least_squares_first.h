@@ -141,7 +141,8 @@ inline Quadric_fit fit_quadric(const std::vector<Eigen::Vector3d>& points, doubl
   const std::size_t size = points.size();
   if(size <= 6 || !(radius >= 1e-300))
     return none;
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> axes = principal_axes(points, [](std::size_t) { return true; });
+  const Principal_axes principal = principal_axes(points, [](std::size_t) { return true; });
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& axes = principal.axes;
   // Eigenvalues are sorted increasingly: a line has a single large one.
   if(!(axes.eigenvalues()[1] > 1e-12 * axes.eigenvalues()[2]))
     return none;

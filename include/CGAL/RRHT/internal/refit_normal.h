@@ -14,7 +14,7 @@
 #define CGAL_RRHT_INTERNAL_REFIT_NORMAL_H
 
 #include <CGAL/RRHT/internal/nth_smallest.h>
-#include <CGAL/RRHT/internal/outer_product.h>
+#include <CGAL/RRHT/internal/principal_axes.h>
 #include <CGAL/number_type_config.h>
 
 #include <Eigen/Cholesky>
@@ -190,34 +190,6 @@ bool fit_quadric_height_field(const std::vector<Eigen::Vector3d>& local, Use use
   right_side << sz, sxz, syz, sxxz, sxyz, syyz;
   c = normal_matrix.ldlt().solve(right_side);
   return c.allFinite();
-}
-
-/// The principal axes of `points` where `use(i)`: the eigenvectors of their
-/// covariance, by increasing eigenvalue.
-template <class Use>
-Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> principal_axes(const std::vector<Eigen::Vector3d>& points, Use use)
-{
-  Eigen::Vector3d center = Eigen::Vector3d::Zero();
-  double count = 0;
-  for(std::size_t i = 0; i < points.size(); ++i)
-    if(use(i))
-      center += points[i], count += 1;
-  center /= count;
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-  for(std::size_t i = 0; i < points.size(); ++i)
-    if(use(i))
-    {
-      const Eigen::Vector3d q = points[i] - center;
-      add_outer_product(covariance, q, q);
-    }
-  return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance);
-}
-
-/// The unit normal of the smallest axis of `points` where `use(i)`.
-template <class Use>
-Eigen::Vector3d principal_normal(const std::vector<Eigen::Vector3d>& points, Use use)
-{
-  return principal_axes(points, use).eigenvectors().col(0);
 }
 
 /// Whether two unit directions, sign ignored, are at most `degrees` apart.
