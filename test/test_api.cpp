@@ -976,8 +976,8 @@ TEST_CASE("Least squares first: the confidence written is that of the normal ret
                    .adaptive(true));
   for(std::size_t i = 0; i < points.size(); ++i)
     REQUIRE(std::get<1>(with[i]) == std::get<1>(without[i]));
-  // On the faces, where the quadric is kept, the light vote that measures
-  // its confidence agrees with it; near the edges, the votes scatter.
+  // On the faces, where the quadric is kept, most of the triples that
+  // measure its confidence lie near it; near the edges, the votes scatter.
   double faces = 0, edges = 0;
   std::size_t on_faces = 0, near_edges = 0;
   for(std::size_t i = 0; i < points.size(); ++i)

@@ -235,10 +235,10 @@ namespace CGAL {
                        values within a cloud and a setting (on a cube of 100k points with 0.2% noise, with
                        `paper_precise()`, the median is 0.16 on the faces and 0.04 within 1% of the diagonal of
                        an edge). A null normal has confidence 0. With the paper's settings, writing it costs no
-                       measurable time; with `least_squares_first` (part of the default), a light vote (50 triples,
-                       one accumulator) then also runs where a normal is kept without a vote, to measure it, which
-                       takes some time (see the user manual): pass a confidence map only where the confidences are
-                       read.}
+                       measurable time; with `least_squares_first` (part of the default), where a normal is kept without a vote, the
+                       share of 50 of its triples whose planes lie within twice a bin's solid angle of it measures
+                       it, which takes some time (see the user manual): pass a confidence map only where the
+                       confidences are read.}
      \cgalParamNEnd
 
      \cgalParamNBegin{adaptive}
@@ -326,8 +326,8 @@ namespace CGAL {
                        (across a crease), and the adaptive setting goes on elsewhere. The confidence written for a
                        quadric's or such a plane's normal is measured on
                        the votes of the Hough transform's first stage at the point (the cheap stage with `adaptive`)
-                       where that stage ran, and elsewhere, if a `confidence_map` is given, on those of 50 triples in
-                       one accumulator. The passes are streamed along a Hilbert curve of the points: each
+                       where that stage ran, and elsewhere, if a `confidence_map` is given, on 50 triples (the share
+                       whose planes lie within twice a bin's solid angle of the normal). The passes are streamed along a Hilbert curve of the points: each
                        point's neighbors are kept between its passes where these are close along the curve, and
                        found again elsewhere. The result stays the same for any number of threads.}
      \cgalParamNEnd

@@ -282,8 +282,10 @@ def estimate_normals(
     confidence : numpy.ndarray, shape (N,), float64
         Only with ``return_confidence``: from 0 to 1, the share of all the
         planes drawn at the point, over the rotated accumulators, that voted
-        for a most voted bin within ``cluster_angle`` of the returned normal.
-        It drops near sharp features and where the normal is wrong, so a low
+        for a most voted bin within ``cluster_angle`` of the returned normal;
+        with ``least_squares_first`` (the default), where the normal is kept
+        without a vote, the share of 50 of its triples whose planes lie
+        within twice a bin's solid angle of it. It drops near sharp features and where the normal is wrong, so a low
         value flags a normal to distrust; noise lowers it evenly over a
         cloud, so compare values within a cloud. 0 where the normal is zero.
     support : numpy.ndarray, shape (N,), float64

@@ -8,6 +8,8 @@
 #ifndef CGAL_RRHT_INTERNAL_CONFIDENCE_H
 #define CGAL_RRHT_INTERNAL_CONFIDENCE_H
 
+#include <CGAL/RRHT/internal/Random.h>
+#include <CGAL/RRHT/internal/Triple.h>
 #include <CGAL/RRHT/internal/aggregate.h>
 
 #include <Eigen/Core>
@@ -15,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace CGAL {
@@ -48,6 +51,44 @@ inline double confidence(const std::vector<Candidate_normal>& candidates, const 
       agreeing += c.votes;
   }
   return all > 0 ? double(agreeing) / double(all) : 0.;
+}
+
+/// The confidence of `normal` (unit) where it was kept without a vote (a
+/// least-squares normal), on the scale of `confidence()`: the share of
+/// `number_of_planes` triples of the neighbors `points` (relative to the
+/// point), drawn by `sampler` with `rng` as RRHT_Points draws them, whose
+/// plane lies within the cap about `normal` of solid angle 2 pi (1 -
+/// `cos_cap`). A vote would measure the share of its most voted bin, at the
+/// cost of rotating the points and filling an accumulator; the cap is
+/// centered on the normal, where a bin lies anywhere about it, so it is
+/// taken larger than a bin (`Least_squares_first_thresholds`). `triples`
+/// is a nonempty buffer of draws. Triples whose edges make an angle below
+/// 1e-5 radians define no plane and are not counted, as in a vote; 0 where
+/// no triple defines a plane.
+template <typename Sampler>
+double confidence_of_kept_normal(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& normal,
+                                 double cos_cap, std::size_t number_of_planes, Sampler& sampler, Random& rng,
+                                 std::vector<Triple>& triples)
+{
+  const double squared_cos_cap = cos_cap * cos_cap;
+  sampler.prepare(std::uint32_t(points.size()), number_of_planes);
+  sampler.start_run();
+  std::size_t agreeing = 0, planes = 0;
+  for(std::size_t drawn = 0, got = 1; drawn < number_of_planes && got > 0; drawn += got)
+  {
+    got = sampler.draw(rng, (std::min)(number_of_planes - drawn, triples.size()), triples.data());
+    for(std::size_t i = 0; i < got; ++i)
+    {
+      const Eigen::Vector3d& a = points[triples[i][0]];
+      const Eigen::Vector3d u = points[triples[i][1]] - a, v = points[triples[i][2]] - a;
+      const Eigen::Vector3d n = u.cross(v);
+      const double squared_norm = n.squaredNorm(), along = n.dot(normal);
+      const bool plane = squared_norm > 1e-10 * u.squaredNorm() * v.squaredNorm();
+      planes += plane;
+      agreeing += plane && along * along >= squared_cos_cap * squared_norm;
+    }
+  }
+  return planes > 0 ? double(agreeing) / double(planes) : 0.;
 }
 
 } // namespace internal

@@ -16,6 +16,7 @@
 #include <CGAL/RRHT/internal/Packed_direction.h>
 #include <CGAL/RRHT/internal/Pass_context.h>
 #include <CGAL/RRHT/internal/Progress.h>
+#include <CGAL/RRHT/internal/Random.h>
 #include <CGAL/RRHT/internal/Scratch.h>
 #include <CGAL/RRHT/internal/Settings.h>
 #include <CGAL/RRHT/internal/adaptive.h>
@@ -110,11 +111,14 @@ struct Least_squares_first_thresholds
   static constexpr double stacked_others = 0.1;
   /// The confidence of a normal kept without a vote (a quadric that no
   /// rejected neighbor contests, a neighbor plane that holds most of the
-  /// neighborhood) is measured on the votes of `confidence_planes` triples
-  /// in `confidence_rotations` accumulator: it only has to rank the normal
-  /// among the others, and these are most of the points.
+  /// neighborhood) is measured on `confidence_planes` triples
+  /// (`confidence_of_kept_normal()`): it only has to rank the normal among
+  /// the others, and these are most of the points. Their share within a cap
+  /// of `confidence_cap` bins' solid angle about the normal ranks the errors
+  /// as well as the most voted bin's share of a vote of as many triples
+  /// (one bin: less well on the noisy corner and gear).
   static constexpr std::size_t confidence_planes = 50;
-  static constexpr unsigned int confidence_rotations = 1;
+  static constexpr double confidence_cap = 2;
 };
 
 /// Jet fitting's quadric at a point: its normal, and its residuals' root
@@ -557,16 +561,19 @@ void least_squares_first(const Pass_context& context, const Least_squares_first_
   };
 
   const Settings& first_stage = options.stages ? options.stages->cheap : settings;
-  Settings light = first_stage;
-  light.number_of_planes = (std::min)(light.number_of_planes, Least_squares_first_thresholds::confidence_planes);
-  light.number_of_rotations = (std::min)(light.number_of_rotations, Least_squares_first_thresholds::confidence_rotations);
   // The confidence of `normal`, kept without a vote at the point whose id is
-  // `id`, where the confidences are asked: a light vote measures it.
+  // `id`, where the confidences are asked: a few of the point's triples
+  // measure it, with its own random stream.
+  const std::size_t confidence_planes =
+    (std::min)(first_stage.number_of_planes, Least_squares_first_thresholds::confidence_planes);
+  const double cos_cap =
+    (std::max)(0., 1 - Least_squares_first_thresholds::confidence_cap / double(context.layout.size()));
   auto confidence_of_kept = [&](std::uint64_t id, const Eigen::Vector3d& normal, Scratch& scratch) {
     if(!options.confidences)
       return 0.;
-    estimate_normal_of_neighborhood(id, light, scratch);
-    return confidence(scratch.candidates, normal, light.cos_cluster_angle);
+    Random rng(settings.seed, id);
+    return confidence_of_kept_normal(scratch.neighborhood.points, normal, cos_cap, confidence_planes, scratch.points,
+                                     rng, scratch.triples);
   };
   // The best of the planes of the point's one-sheet neighbors, refitted
   // (`best_neighbor_plane()`, `refit_neighbor_plane()`), in its
