@@ -237,8 +237,8 @@ namespace CGAL {
                        an edge). A null normal has confidence 0. With the paper's settings, writing it costs no
                        measurable time; with `least_squares_first` (part of the default), where a normal is kept without a vote, the
                        share of 50 of its triples whose planes lie within twice a bin's solid angle of it measures
-                       it, which takes some time (see the user manual): pass a confidence map only where the
-                       confidences are read.}
+                       it (higher values than a vote's, ranked alike), which takes some time (see the user
+                       manual): pass a confidence map only where the confidences are read.}
      \cgalParamNEnd
 
      \cgalParamNBegin{adaptive}

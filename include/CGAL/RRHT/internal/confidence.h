@@ -54,14 +54,15 @@ inline double confidence(const std::vector<Candidate_normal>& candidates, const 
 }
 
 /// The confidence of `normal` (unit) where it was kept without a vote (a
-/// least-squares normal), on the scale of `confidence()`: the share of
+/// least-squares normal), to rank with those of `confidence()`: the share of
 /// `number_of_planes` triples of the neighbors `points` (relative to the
 /// point), drawn by `sampler` with `rng` as RRHT_Points draws them, whose
 /// plane lies within the cap about `normal` of solid angle 2 pi (1 -
 /// `cos_cap`). A vote would measure the share of its most voted bin, at the
 /// cost of rotating the points and filling an accumulator; the cap is
 /// centered on the normal, where a bin lies anywhere about it, so it is
-/// taken larger than a bin (`Least_squares_first_thresholds`). `triples`
+/// taken larger than a bin (`Least_squares_first_thresholds`), and holds
+/// more of the triples. `triples`
 /// is a nonempty buffer of draws. Triples whose edges make an angle below
 /// 1e-5 radians define no plane and are not counted, as in a vote; 0 where
 /// no triple defines a plane.
