@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // How far to trust the normal at a point, from what its rotated
-// accumulators already know (beyond the paper; measured in
+// accumulators already know, or, where no vote ran, from a few of its
+// triples (beyond the paper; measured in
 // benchmark/results/confidence/confidence.md).
 
 #ifndef CGAL_RRHT_INTERNAL_CONFIDENCE_H
@@ -56,16 +57,15 @@ inline double confidence(const std::vector<Candidate_normal>& candidates, const 
 /// The confidence of `normal` (unit) where it was kept without a vote (a
 /// least-squares normal), to rank with those of `confidence()`: the share of
 /// `number_of_planes` triples of the neighbors `points` (relative to the
-/// point), drawn by `sampler` with `rng` as RRHT_Points draws them, whose
-/// plane lies within the cap about `normal` of solid angle 2 pi (1 -
-/// `cos_cap`). A vote would measure the share of its most voted bin, at the
-/// cost of rotating the points and filling an accumulator; the cap is
-/// centered on the normal, where a bin lies anywhere about it, so it is
-/// taken larger than a bin (`Least_squares_first_thresholds`), and holds
-/// more of the triples. `triples`
-/// is a nonempty buffer of draws. Triples whose edges make an angle below
-/// 1e-5 radians define no plane and are not counted, as in a vote; 0 where
-/// no triple defines a plane.
+/// point), drawn by `sampler` with `rng` as RRHT_Points draws them into the
+/// nonempty buffer `triples`, whose plane lies within the cap about `normal`
+/// of solid angle 2 pi (1 - `cos_cap`). A vote would measure the share of
+/// its most voted bin, at the cost of rotating the points and filling an
+/// accumulator; the cap is centered on the normal, where a bin lies
+/// anywhere about it, so it is taken larger than a bin
+/// (`Least_squares_first_thresholds`) and holds more of the triples.
+/// Triples whose edges make an angle below 1e-5 radians define no plane and
+/// are not counted, as in a vote; 0 where no triple defines a plane.
 template <typename Sampler>
 double confidence_of_kept_normal(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& normal,
                                  double cos_cap, std::size_t number_of_planes, Sampler& sampler, Random& rng,
