@@ -23,17 +23,16 @@ namespace CGAL {
 namespace RRHT {
 namespace internal {
 
-/// A point between its first pass and its third: its position, the list
-/// that holds the positions of its neighbors (itself included) while they
-/// are kept, and what its own passes hand to each other (`State`).
-template <typename State>
+/// A point between two of its passes, as the rounds of
+/// `neighborhood_passes()` hand it on: its position, the slot of its
+/// `State`, and the list that holds the positions of its neighbors (itself
+/// included) while they are kept.
 struct Point_in_passes
 {
   static constexpr std::uint32_t no_list = std::uint32_t(-1);
   std::uint32_t position;
-  std::uint32_t third_step; // the step of the curve after which its third pass can run
-  std::uint32_t list;       // or `no_list`
-  State state;
+  std::uint32_t slot;
+  std::uint32_t list; // or `no_list`
 };
 
 /// Runs three passes over the `size` points of a cloud stored along a
@@ -69,12 +68,12 @@ void neighborhood_passes(std::size_t size, Progress& progress, MakeScratch make_
   // of the points that wait longer would be most of those held, and few
   // points wait that long.
   constexpr std::size_t keep = 8;
-  typedef Point_in_passes<State> Point;
+  typedef Point_in_passes Point;
   const std::size_t steps = (size + chunk - 1) / chunk;
-  // The points in passes and the lists of neighbors, each in slots reused
-  // once let go.
-  std::vector<Point> slots;
-  std::vector<std::uint32_t> free_slots;
+  // The states of the points in passes and the lists of neighbors, each in
+  // slots reused once let go.
+  std::vector<State> states;
+  std::vector<std::uint32_t> free_states;
   std::vector<std::vector<std::uint32_t> > lists;
   std::vector<std::uint32_t> free_lists;
   auto take = [](auto& pool, std::vector<std::uint32_t>& free) {
@@ -87,26 +86,26 @@ void neighborhood_passes(std::size_t size, Progress& progress, MakeScratch make_
     free.pop_back();
     return slot;
   };
-  auto let_go = [&](Point& p) {
-    lists[p.list].clear();
-    free_lists.push_back(p.list);
-    p.list = Point::no_list;
-  };
   // The step after which each point's second pass can run: the last of its
   // neighbors' (and its own).
   std::vector<std::uint32_t> second_step(size);
-  // The slots whose second (third) pass runs after each step.
-  std::vector<std::vector<std::uint32_t> > seconds(steps), thirds(steps);
-  std::vector<std::uint32_t> round; // the slots of a round: third passes, second ones, first ones
+  // The points whose second (third) pass runs after each step.
+  std::vector<std::vector<Point> > seconds(steps), thirds(steps);
+  // A round's points (third passes, second ones, first ones) and the step
+  // after which the next pass of each can run. The parallel loop touches
+  // each point's state and list; what runs between loops reads only these
+  // arrays, in order.
+  std::vector<Point> round;
+  std::vector<std::uint32_t> next_step;
   Block_loop<ConcurrencyTag, MakeScratch> loop(make_scratch);
   // Round r: the first passes of step r, the second ones due after step
   // r - 1, the third ones due after step r - 2.
   for(std::size_t r = 0; r < steps + 2 && !progress.interrupted(); ++r)
   {
     round.clear();
-    auto take_due = [&round](std::vector<std::uint32_t>& due) {
+    auto take_due = [&round](std::vector<Point>& due) {
       round.insert(round.end(), due.begin(), due.end());
-      std::vector<std::uint32_t>().swap(due);
+      std::vector<Point>().swap(due);
     };
     if(r >= 2)
       take_due(thirds[r - 2]);
@@ -116,64 +115,64 @@ void neighborhood_passes(std::size_t size, Progress& progress, MakeScratch make_
     const std::size_t second_end = round.size();
     if(r < steps)
       for(std::size_t i = r * chunk; i < (std::min)(size, (r + 1) * chunk); ++i)
-      {
-        const std::uint32_t slot = take(slots, free_slots);
-        slots[slot].position = std::uint32_t(i);
-        slots[slot].list = Point::no_list;
-        round.push_back(slot);
-      }
-    // An empty list is found in the loop: it holds at least the point.
-    for(std::uint32_t slot : round)
-      if(slots[slot].list == Point::no_list)
-        slots[slot].list = take(lists, free_lists);
+        round.push_back({ std::uint32_t(i), take(states, free_states), Point::no_list });
+    // A point without a list gets an empty one, filled in the loop: it
+    // holds at least the point.
+    for(Point& p : round)
+      if(p.list == Point::no_list)
+        p.list = take(lists, free_lists);
+    next_step.resize(round.size());
+    // Whether the point at `k` in the round lets its list go: after its
+    // third pass, or where its next pass is more than `keep` rounds away
+    // (the round of a pass due after step s is s + 1 for a second one, s + 2
+    // for a third).
+    auto lets_go = [&](std::size_t k) {
+      return k < third_end || std::size_t(next_step[k]) + (k < second_end ? 2 : 1) > r + keep;
+    };
     loop(round.size(), progress, [&](std::size_t begin, std::size_t end, auto& scratch) {
       for(std::size_t k = begin; k < end; ++k)
       {
-        Point& p = slots[round[k]];
-        std::vector<std::uint32_t>& neighbors = lists[p.list];
+        const std::size_t i = round[k].position;
+        State& state = states[round[k].slot];
+        std::vector<std::uint32_t>& neighbors = lists[round[k].list];
         if(k < second_end && neighbors.empty())
-          find(std::size_t(p.position), neighbors, scratch);
+          find(i, neighbors, scratch);
         if(k < third_end)
-          third(std::size_t(p.position), neighbors, p.state, scratch);
+          third(i, neighbors, state, scratch);
         else if(k < second_end)
         {
-          second(std::size_t(p.position), neighbors, p.state, scratch);
-          std::uint32_t last = second_step[p.position];
+          second(i, neighbors, state, scratch);
+          std::uint32_t last = second_step[i];
           for(std::uint32_t j : neighbors)
             last = (std::max)(last, second_step[j]);
-          p.third_step = last;
+          next_step[k] = last;
         }
         else
         {
-          first(std::size_t(p.position), neighbors, p.state, scratch);
-          std::uint32_t last = p.position;
+          first(i, neighbors, state, scratch);
+          std::uint32_t last = std::uint32_t(i);
           for(std::uint32_t j : neighbors)
             last = (std::max)(last, j);
-          second_step[p.position] = std::uint32_t(last / chunk);
+          second_step[i] = next_step[k] = std::uint32_t(last / chunk);
         }
+        if(lets_go(k))
+          neighbors.clear();
       }
     });
     if(progress.interrupted())
       break;
-    // The round of a pass due after step s is s + 1 for a second one, s + 2
-    // for a third.
-    auto schedule = [&](std::vector<std::uint32_t>& due, std::uint32_t slot, std::size_t pass_round) {
-      due.push_back(slot);
-      if(pass_round > r + keep)
-        let_go(slots[slot]);
-    };
     for(std::size_t k = 0; k < round.size(); ++k)
     {
-      Point& p = slots[round[k]];
-      if(k < third_end)
+      Point p = round[k];
+      if(lets_go(k))
       {
-        let_go(p);
-        free_slots.push_back(round[k]);
+        free_lists.push_back(p.list);
+        p.list = Point::no_list;
       }
-      else if(k < second_end)
-        schedule(thirds[p.third_step], round[k], std::size_t(p.third_step) + 2);
+      if(k < third_end)
+        free_states.push_back(p.slot);
       else
-        schedule(seconds[second_step[p.position]], round[k], std::size_t(second_step[p.position]) + 1);
+        (k < second_end ? thirds : seconds)[next_step[k]].push_back(p);
     }
   }
 }
