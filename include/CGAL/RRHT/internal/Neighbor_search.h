@@ -13,7 +13,8 @@
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Kd_tree.h>
 #include <CGAL/property_map.h>
-#include <CGAL/hilbert_sort.h>
+#include <CGAL/Hilbert_policy_tags.h>
+#include <CGAL/Hilbert_sort_3.h>
 #include <CGAL/Spatial_sort_traits_adapter_3.h>
 
 #include <Eigen/Core>
@@ -77,16 +78,16 @@ bool has_finite_coordinates(const Point& p)
 /// of a cloud that holds a point's neighborhood gives that point the same
 /// neighborhood, in the same order, as the whole cloud.
 ///
-/// The points, all with finite coordinates, are stored in the order of a Hilbert curve
-/// (`CGAL::hilbert_sort()`), and queries are made by position in that order:
-/// points close in space are close in memory, so consecutive queries walk
-/// the same branches of the tree and read the same cache lines. Consecutive
-/// queries also have neighborhoods of about the same radius: a k-neighborhood
-/// is first looked for among the points within a little more than the
-/// previous one's radius, collected from the tree without a queue, and CGAL's
-/// k-neighbor search runs only where that ball holds too few. Positions
-/// are 32-bit, as the indices of `CGAL::Point_set_3`: at most 2^32 - 1
-/// points (`max_size()`).
+/// The points, all with finite coordinates, are stored in the order of a
+/// Hilbert curve (`CGAL::Hilbert_sort_3`, median policy), and queries are
+/// made by position in that order: points close in space are close in
+/// memory, so consecutive queries walk the same branches of the tree and
+/// read the same cache lines. Consecutive queries also have neighborhoods of
+/// about the same radius: a k-neighborhood is first looked for among the
+/// points within a little more than the previous one's radius, collected
+/// from the tree without a queue, and CGAL's k-neighbor search runs only
+/// where that ball holds too few. Positions are 32-bit, as the indices of
+/// `CGAL::Point_set_3`: at most 2^32 - 1 points (`max_size()`).
 class Neighbor_search
 {
 public:
@@ -163,9 +164,12 @@ public:
     m_input.resize(n);
     std::iota(m_input.begin(), m_input.end(), std::uint32_t(0));
     m_point_map.points = m_points.data();
-    CGAL::hilbert_sort<ConcurrencyTag>(m_input.begin(), m_input.end(),
-                                       CGAL::Spatial_sort_traits_adapter_3<Kernel, Point_map>(m_point_map),
-                                       CGAL::Hilbert_sort_median_policy());
+    // CGAL::hilbert_sort() shuffles the points first, which a Delaunay
+    // insertion needs and a median split does not: its sorter alone.
+    typedef CGAL::Spatial_sort_traits_adapter_3<Kernel, Point_map> Sort_traits;
+    const CGAL::Hilbert_sort_3<Sort_traits, CGAL::Hilbert_sort_median_policy, ConcurrencyTag> sort(
+      (Sort_traits(m_point_map)));
+    sort(m_input.begin(), m_input.end());
     std::vector<bool> placed(n, false);
     for(std::size_t start = 0; start < n; ++start)
     {
