@@ -484,7 +484,8 @@ struct Least_squares_first_options
 ///    stage (`Neighbor_planes_thresholds`).
 /// The confidence of a quadric's or a neighbor plane's normal is measured on
 /// the votes of the Hough transform's first stage at the point where it
-/// ran, and elsewhere on a lighter vote (`confidence()`,
+/// ran, and elsewhere on a few triples of its neighbors
+/// (`confidence_of_kept_normal()`,
 /// `Least_squares_first_thresholds::confidence_planes`). The support
 /// is the ball that holds the neighborhoods of the point's neighbors'
 /// neighbors, whose tests decide.
