@@ -95,6 +95,7 @@ public:
     const Dataset* dataset;
     Estimator estimator;
     unsigned int threads;
+    std::vector<int> cores = {}; // the cores it runs on (any, if none)
   };
 
   /// Measures each of `planned` as many times as `run_with()` does, but in
@@ -112,7 +113,7 @@ public:
         if(round > 0 && all[i].status != Measurement::OK)
           continue;
         const Measurement m = measure(planned[i].estimator.estimate, planned[i].dataset->cloud, planned[i].threads, 1,
-                                      config_.timeout);
+                                      config_.timeout, std::string(), planned[i].cores);
         if(round == 0)
           all[i] = m;
         else if(m.status != Measurement::OK)
@@ -201,6 +202,23 @@ double ratio_by_rounds(const Measurement& numerator, const Measurement& denomina
   Measurement ratios;
   for(std::size_t k = 0; k < numerator.seconds.size(); ++k)
     ratios.seconds.push_back(numerator.seconds[k] / denominator.seconds[k]);
+  return ratios.median();
+}
+
+/// The speed-up from 1 to 2 threads, from measurements in the same rounds:
+/// `two` with 2 threads on two cores, `one_a` and `one_b` with 1 thread on
+/// each of them. Each round gives the harmonic mean of the 1-thread times
+/// over the 2-thread time: on cores of equal speed, the ratio of the times;
+/// on a shared machine, whose cores need not run alike, the 2-thread time
+/// against that of ideal sharing between those two cores, whichever one
+/// thread would have landed on. The median over the rounds; 0 if any failed.
+double speed_up_over_two_cores(const Measurement& two, const Measurement& one_a, const Measurement& one_b)
+{
+  if(ratio_by_rounds(one_a, two) == 0 || ratio_by_rounds(one_b, two) == 0)
+    return 0;
+  Measurement ratios;
+  for(std::size_t k = 0; k < two.seconds.size(); ++k)
+    ratios.seconds.push_back(2 / (1 / one_a.seconds[k] + 1 / one_b.seconds[k]) / two.seconds[k]);
   return ratios.median();
 }
 

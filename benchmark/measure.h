@@ -10,7 +10,8 @@
 //   peak is the resident size above that baseline at the end (input and
 //   output excluded, everything the estimator allocates included);
 // - TBB's number of threads is set for that measurement alone
-//   (tbb::global_control), the parent never starting TBB;
+//   (tbb::global_control), the parent never starting TBB, and so are the
+//   cores it may run on, if given (sched_setaffinity);
 // - a crash or a time-out of one estimator is recorded, not fatal.
 
 #ifndef CGAL_RRHT_BENCHMARK_MEASURE_H
@@ -26,10 +27,12 @@
 #include <cstring>
 #include <fstream>
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include <malloc.h>
+#include <sched.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -144,11 +147,27 @@ inline void write_errors(const Cloud& cloud, const std::string& path)
 
 } // namespace internal
 
+/// The first `count` cores this process may run on, or none if it may run
+/// on fewer.
+inline std::vector<int> first_cores(std::size_t count)
+{
+  std::vector<int> cores;
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  if(::sched_getaffinity(0, sizeof set, &set) == 0)
+    for(int c = 0; c < CPU_SETSIZE && cores.size() < count; ++c)
+      if(CPU_ISSET(c, &set))
+        cores.push_back(c);
+  return cores.size() == count ? cores : std::vector<int>();
+}
+
 /// Runs `estimate` `runs` times on copies of `cloud` with `threads` threads,
-/// in a child process killed after `timeout_seconds` (0: no limit). Writes
-/// the per-point errors of the first run to `errors_path` if not empty.
+/// on the `cores` given (any, if none), in a child process killed after
+/// `timeout_seconds` (0: no limit). Writes the per-point errors of the first
+/// run to `errors_path` if not empty.
 inline Measurement measure(const Estimate& estimate, const Cloud& cloud, unsigned int threads, int runs,
-                           unsigned int timeout_seconds, const std::string& errors_path = std::string())
+                           unsigned int timeout_seconds, const std::string& errors_path = std::string(),
+                           const std::vector<int>& cores = std::vector<int>())
 {
   runs = (std::max)(1, (std::min)(runs, 16));
   std::fflush(stdout);
@@ -177,6 +196,15 @@ inline Measurement measure(const Estimate& estimate, const Cloud& cloud, unsigne
     r.status = Measurement::FAILED;
     try
     {
+      if(!cores.empty())
+      {
+        cpu_set_t set;
+        CPU_ZERO(&set);
+        for(int c : cores)
+          CPU_SET(c, &set);
+        if(::sched_setaffinity(0, sizeof set, &set) != 0)
+          throw std::runtime_error("sched_setaffinity() failed");
+      }
       tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism, threads);
       Cloud work;
       for(int run = 0; run < runs; ++run)
