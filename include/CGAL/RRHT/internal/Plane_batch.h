@@ -45,7 +45,8 @@ namespace internal {
 /// off by about 1e-7 / sin(angle of its triple) radians, far below the size
 /// of a bin and the spread of the normals of a noisy triple. Triples whose
 /// two edges make an angle below 1e-5 radians (sin^2 < 1e-10, where single
-/// precision gives no direction) define no plane and are left out.
+/// precision gives no direction) define no plane and are left out, as in
+/// `confidence_of_kept_normal()`.
 class Plane_batch
 {
 public:

@@ -12,7 +12,6 @@
 #include <CGAL/RRHT/internal/principal_axes.h>
 
 #include <Eigen/Core>
-#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <cmath>

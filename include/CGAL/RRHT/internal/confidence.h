@@ -65,7 +65,8 @@ inline double confidence(const std::vector<Candidate_normal>& candidates, const 
 /// anywhere about it, so it is taken larger than a bin
 /// (`Least_squares_first_thresholds`) and holds more of the triples.
 /// Triples whose edges make an angle below 1e-5 radians define no plane and
-/// are not counted, as in a vote; 0 where no triple defines a plane.
+/// are not counted, as in a vote (`Plane_batch`'s test, in double
+/// precision); 0 where no triple defines a plane.
 template <typename Sampler>
 double confidence_of_kept_normal(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& normal,
                                  double cos_cap, std::size_t number_of_planes, Sampler& sampler, Random& rng,
