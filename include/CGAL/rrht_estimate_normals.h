@@ -23,6 +23,7 @@
 #include <CGAL/RRHT/internal/check_parameters.h>
 #include <CGAL/RRHT/internal/hough_transform_passes.h>
 #include <CGAL/RRHT/internal/least_squares_first.h>
+#include <CGAL/RRHT/internal/points_in_double.h>
 #include <CGAL/RRHT/internal/read_parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -41,6 +42,7 @@
 #include <functional>
 #include <iterator>
 #include <limits>
+#include <numeric>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -436,21 +438,34 @@ void rrht_estimate_normals(PointRange& points,
                                                     internal_np::Param_not_found>::value;
   std::vector<bool> neighbor_only;
   RRHT::internal::Elements<typename PointRange::iterator> elements;
-  std::vector<RRHT::internal::Neighbor_search::Point> cloud;
-  std::vector<std::uint32_t> input; // the position of each point of the cloud
+  std::vector<RRHT::internal::Neighbor_search::Point> cloud =
+    RRHT::internal::points_in_double<ConcurrencyTag>(points, point_map);
+  // The finite points are moved to the front of the cloud, in order; their
+  // positions in the input are listed once one is moved.
+  std::vector<std::uint32_t> input;
   std::vector<std::uint64_t> ids;
-  std::size_t position = 0;
+  std::size_t position = 0, kept = 0;
   for(auto it = points.begin(); it != points.end(); ++it, ++position)
   {
-    const auto& p = get(point_map, *it);
-    const RRHT::internal::Neighbor_search::Point q(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
     elements.add(it);
     if constexpr(with_ids)
       ids.push_back(static_cast<std::uint64_t>(get(point_id_map, *it)));
     if constexpr(with_neighbor_only)
       neighbor_only.push_back(static_cast<bool>(get(neighbor_only_map, *it)));
-    if(RRHT::internal::has_finite_coordinates(q))
-      cloud.push_back(q), input.push_back(std::uint32_t(position));
+    if(RRHT::internal::has_finite_coordinates(cloud[position]))
+    {
+      if(kept != position)
+      {
+        if(input.empty())
+        {
+          input.resize(kept);
+          std::iota(input.begin(), input.end(), std::uint32_t(0));
+        }
+        cloud[kept] = cloud[position];
+        input.push_back(std::uint32_t(position));
+      }
+      ++kept;
+    }
     else if(neighbor_only.empty() || !neighbor_only.back())
     {
       put(normal_map, *it, CGAL::NULL_VECTOR);
@@ -458,6 +473,7 @@ void rrht_estimate_normals(PointRange& points,
       put(support_radius_map, *it, 0.);
     }
   }
+  cloud.resize(kept);
   if(cloud.empty())
     return;
   const RRHT::internal::Neighbor_search search(std::move(cloud), std::move(input), ids, ConcurrencyTag());
