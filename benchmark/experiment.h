@@ -191,13 +191,19 @@ bool shared_mesh(const Config& config, const std::string& file, const std::strin
 // round), and the time against k, printed at the end and written to
 // speed_ratios.csv.
 
+/// Whether both measurements succeeded, in the same number of rounds.
+bool measured_alike(const Measurement& a, const Measurement& b)
+{
+  return a.status == Measurement::OK && b.status == Measurement::OK && a.seconds.size() == b.seconds.size();
+}
+
 /// The time of `numerator` over that of `denominator`, measured in the same
 /// rounds (`Experiment::run_in_rounds()`): the median of the ratios of their
 /// runs round by round; 0 if either failed.
+
 double ratio_by_rounds(const Measurement& numerator, const Measurement& denominator)
 {
-  if(numerator.status != Measurement::OK || denominator.status != Measurement::OK ||
-     numerator.seconds.size() != denominator.seconds.size())
+  if(!measured_alike(numerator, denominator))
     return 0;
   Measurement ratios;
   for(std::size_t k = 0; k < numerator.seconds.size(); ++k)
@@ -214,7 +220,7 @@ double ratio_by_rounds(const Measurement& numerator, const Measurement& denomina
 /// thread would have landed on. The median over the rounds; 0 if any failed.
 double speed_up_over_two_cores(const Measurement& two, const Measurement& one_a, const Measurement& one_b)
 {
-  if(ratio_by_rounds(one_a, two) == 0 || ratio_by_rounds(one_b, two) == 0)
+  if(!measured_alike(one_a, two) || !measured_alike(one_b, two))
     return 0;
   Measurement ratios;
   for(std::size_t k = 0; k < two.seconds.size(); ++k)

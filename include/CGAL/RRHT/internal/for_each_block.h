@@ -59,9 +59,6 @@ public:
     // Progress is reported, and an interruption seen, after every block of
     // 64 points, however large the ranges that TBB hands to a thread.
     const std::size_t block = 64;
-    // TBB may hand ranges of as few as this many points, so that the threads
-    // finish a loop together where some points cost far more than others.
-    const std::size_t grain = 8;
     auto blocks = [&](std::size_t begin, std::size_t end, Scratch_type& scratch) {
       for(; begin < end && !progress.interrupted(); begin += block)
       {
@@ -73,6 +70,10 @@ public:
 #ifdef CGAL_LINKED_WITH_TBB
     if(parallel)
     {
+      // TBB may hand ranges of as few as this many points, so that the
+      // threads finish a loop together where some points cost far more than
+      // others.
+      const std::size_t grain = 8;
       tbb::parallel_for(tbb::blocked_range<std::size_t>(0, size, grain),
                         [&](const tbb::blocked_range<std::size_t>& range) {
                           blocks(range.begin(), range.end(), m_scratches.local());
