@@ -26,6 +26,7 @@
 #include <cstdint>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
 #include <functional>
 #include <limits>
 #include <list>
@@ -635,6 +636,24 @@ TEST_CASE("Bad input: a clear exception or a documented result, never NaN", "[ap
       else
         CHECK(std::abs(normals[i].z()) == Approx(1));
     }
+  }
+  SECTION("points spanning hundreds of orders of magnitude: unit normals or the null vector, never NaN")
+  {
+    // A damaged binary PLY file read as doubles: coordinates from 1e-300 to
+    // 1e256, neighborhoods whose points span more orders of magnitude than
+    // double precision holds.
+    std::ifstream in(std::string(RRHT_TEST_DATA) + "/multiscale.xyz");
+    Pair_cloud<SC> cloud;
+    for(double x, y, z; in >> x >> y >> z;)
+      cloud.emplace_back(SC::Point_3(x, y, z), SC::Vector_3(1, 1, 1));
+    REQUIRE(cloud.size() == 300);
+    auto check = [&](const auto& np) {
+      for(unsigned int k : { 3, 8, 30 })
+        for(const auto& normal : estimate(cloud, k, np))
+          CHECK((normal == null || std::abs(normal.squared_length() - 1) < 1e-12));
+    };
+    check(maps);
+    check(maps.least_squares_first(false).adaptive(false));
   }
   SECTION("invalid parameters throw std::invalid_argument and write nothing")
   {

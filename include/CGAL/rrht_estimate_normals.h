@@ -85,7 +85,9 @@ namespace CGAL {
    The output normals are unit vectors, randomly oriented (use
    `CGAL::mst_orient_normals()` to orient them). Where no plane can be formed
    (fewer than 3 distinct points in the neighborhood, all of them collinear,
-   a `neighbor_radius` below 1e-300, or a point with a non-finite
+   a neighborhood of radius below 1e-150, whose squared distances leave the
+   range of doubles, a neighborhood whose points span more orders of
+   magnitude than double precision holds, or a point with a non-finite
    coordinate), the normal is the null vector
    `CGAL::NULL_VECTOR`. Points with a non-finite coordinate are not
    neighbors of any point.
@@ -488,10 +490,15 @@ void rrht_estimate_normals(PointRange& points,
   // Where the passes write the results of a point, by its position in the search.
   auto element = [&](std::size_t i) { return elements.at(points.begin(), search.input_index(i)); };
   RRHT::internal::Pass_output output;
+  // A neighborhood whose points span more orders of magnitude than double
+  // precision holds (1e-300 beside 1e-130) can give a normal that is not a
+  // number: such a point gets the null vector and no confidence.
   output.normal = [&](std::size_t i, const Eigen::Vector3d& n) {
-    put(normal_map, *element(i), Vector_3(FT(n.x()), FT(n.y()), FT(n.z())));
+    put(normal_map, *element(i), n.allFinite() ? Vector_3(FT(n.x()), FT(n.y()), FT(n.z())) : CGAL::NULL_VECTOR);
   };
-  output.confidence = [&](std::size_t i, double confidence) { put(confidence_map, *element(i), confidence); };
+  output.confidence = [&](std::size_t i, double confidence) {
+    put(confidence_map, *element(i), std::isfinite(confidence) ? confidence : 0.);
+  };
   output.support = [&](std::size_t i, double radius) { put(support_radius_map, *element(i), radius); };
   // A cloud of at most k points is every point's neighborhood: each normal
   // depends on all of it, and has an infinite support.

@@ -52,6 +52,12 @@ struct Neighborhood
   bool complete = true;
 };
 
+/// The radius of the smallest neighborhood given a normal: below it, the
+/// squared distances and products of the coordinates that the estimators
+/// compute before they scale the points would leave the normal range of
+/// doubles (1e-308), and the result would be noise or NaN.
+constexpr double smallest_radius = 1e-150;
+
 /// Whether the three coordinates of `p` are finite.
 template <typename Point>
 bool has_finite_coordinates(const Point& p)

@@ -116,10 +116,9 @@ inline Estimated_normal estimate_normal_of_found(std::uint64_t id, const Setting
                                                  const Adaptive_stages* stages = nullptr)
 {
   const Neighborhood& neighborhood = scratch.neighborhood;
-  // Fewer than 3 distinct points, or a ball so small (a `neighbor_radius`
-  // below 1e-300) that the points cannot be scaled to the unit ball, nor to
-  // the grids of RRHT_Cubes and RRHT_Unif, without overflow.
-  if(neighborhood.points.size() < 3 || !(neighborhood.radius >= 1e-300))
+  // Fewer than 3 distinct points, or a ball too small to compute on
+  // (`smallest_radius`).
+  if(neighborhood.points.size() < 3 || !(neighborhood.radius >= smallest_radius))
     return Estimated_normal{ Eigen::Vector3d::Zero(), 0. };
   if(stages == nullptr)
     return estimate_normal_of_neighborhood(id, settings, scratch);

@@ -143,7 +143,7 @@ inline Quadric_fit fit_quadric(const std::vector<Eigen::Vector3d>& points, doubl
   const double infinity = std::numeric_limits<double>::infinity();
   const Quadric_fit none{ Eigen::Vector3d::Zero(), infinity, infinity };
   const std::size_t size = points.size();
-  if(size <= 6 || !(radius >= 1e-300))
+  if(size <= 6 || !(radius >= smallest_radius))
     return none;
   const Principal_axes principal = principal_axes(points, [](std::size_t) { return true; });
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& axes = principal.axes;
@@ -539,7 +539,10 @@ void least_squares_first(const Pass_context& context, const Least_squares_first_
   // The noise around the point, its test and, for the supports, the ball
   // that holds its neighbors' neighborhoods.
   auto test = [&](std::size_t i, const std::vector<std::uint32_t>& neighbors, State& state, Scratch& scratch) {
-    state.noise_near = state.radius * noise_of_neighbors(neighbors, noise, scratch.refit.work);
+    // A neighborhood too small to compute on has no noise estimate.
+    state.noise_near = state.radius >= smallest_radius
+                         ? state.radius * noise_of_neighbors(neighbors, noise, scratch.refit.work)
+                         : std::numeric_limits<double>::infinity();
     one_sheet[i] = is_one_sheet(state.rms, state.noise_near, neighbors.size(), state.radius);
     if(!one_sheet[i] && state.normal != Eigen::Vector3d::Zero() &&
        neighbors.size() >= Least_squares_first_thresholds::least_for_sheets)
@@ -632,7 +635,7 @@ void least_squares_first(const Pass_context& context, const Least_squares_first_
       }
       e = options.stages ? recheck(id, cheap, *options.stages, scratch) : cheap;
     }
-    else if(options.stages && neighborhood.points.size() >= 3 && neighborhood.radius >= 1e-300)
+    else if(options.stages && neighborhood.points.size() >= 3 && neighborhood.radius >= smallest_radius)
     {
       // The neighbors' plane where it holds most of the neighborhood, or
       // where the cheap stage agrees with it across a crease; the adaptive
