@@ -4,7 +4,7 @@
 // rrht_normals: estimates the normals of a point file with the Robust
 // Randomized Hough Transform, from the command line.
 //
-//   rrht_normals input.{xyz,pwn,ply,off[,las]} [output.{xyz,pwn,ply}] [options]
+//   rrht_normals input.{xyz,pwn,ply,off,las} [output.{xyz,pwn,ply,las}] [options]
 //
 // `rrht_normals --help` lists the options with their defaults.
 
@@ -12,6 +12,8 @@
 #include <CGAL/rrht_estimate_normals.h>
 #include <CGAL/mst_orient_normals.h>
 #include <CGAL/rrht_orient_normals.h>
+#include <CGAL/RRHT/IO/LAS_file.h>
+#include <CGAL/RRHT/IO/write_LAS_with_normals.h>
 #include <CGAL/IO/read_points.h>
 #include <CGAL/IO/write_points.h>
 #include <CGAL/IO/write_ply_points.h>
@@ -31,12 +33,14 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -50,8 +54,9 @@
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef Kernel::Point_3 Point;
 typedef Kernel::Vector_3 Vector;
-// A point, its normal and the normal's confidence (written with --confidence).
-typedef std::tuple<Point, Vector, double> Point_with_normal;
+// A point, its normal, the normal's confidence (written with --confidence)
+// and the point's position in a LAS input, which orienting may reorder.
+typedef std::tuple<Point, Vector, double, std::size_t> Point_with_normal;
 typedef CGAL::Nth_of_tuple_property_map<0, Point_with_normal> Point_map;
 typedef CGAL::Nth_of_tuple_property_map<1, Point_with_normal> Normal_map;
 typedef CGAL::Nth_of_tuple_property_map<2, Point_with_normal> Confidence_map;
@@ -65,13 +70,12 @@ const int usage_error = 2;   // bad command line
 const int runtime_error = 1; // unreadable input, failed estimation or output
 
 // The extensions by which CGAL::IO::read_points() and write_points() choose
-// a format (in any letter case), among those this tool offers.
-const std::vector<std::string> input_extensions = { ".xyz", ".pwn", ".ply", ".off"
-#ifdef CGAL_LINKED_WITH_LASLIB
-                                                    , ".las"
-#endif
-};
-const std::vector<std::string> output_extensions = { ".xyz", ".pwn", ".ply" };
+// a format (in any letter case), among those this tool offers, and LAS,
+// which CGAL::RRHT::IO reads and writes.
+const std::vector<std::string> input_extensions = { ".xyz", ".pwn", ".ply", ".off", ".las" };
+const std::vector<std::string> output_extensions = { ".xyz", ".pwn", ".ply", ".las" };
+// A LAZ file is given to the LAS reader, which says how to decompress it.
+const std::vector<std::string> las_extensions = { ".las", ".laz" };
 
 // The names of the choices of --setting; those of --sampling and
 // --aggregation are the library's (CGAL::RRHT::sampling_names, aggregation_names).
@@ -289,8 +293,8 @@ int main(int argc, char** argv)
      "orient the normals: --orient (consistently, out of closed surfaces, with CGAL::rrht_orient_normals() and "
      "18 neighbors), --orient=up, --orient=X,Y,Z (towards a direction), --orient=viewpoint:X,Y,Z, or "
      "--orient=mst (CGAL::mst_orient_normals(), 18 neighbors)")
-    ("confidence", "also write each normal's confidence, from 0 to 1: a PLY property 'confidence', or a 7th "
-                   "column in .xyz")
+    ("confidence", "also write each normal's confidence, from 0 to 1: a PLY property 'confidence', a 7th "
+                   "column in .xyz, extra bytes NormalConfidence in .las")
     ("quiet,q", "no progress bar");
   po::options_description hidden;
   hidden.add_options()("input", po::value<std::string>())("output", po::value<std::string>());
@@ -302,8 +306,10 @@ int main(int argc, char** argv)
   const std::string usage = "Usage: rrht_normals INPUT [OUTPUT] [options]\n"
                             "Estimates normals with the Robust Randomized Hough Transform (Boulch and Marlet 2012).\n"
                             "INPUT: " + one_of(input_extensions) + "; OUTPUT: " + one_of(output_extensions) +
-                            " with normals (default: INPUT's name + _normals.xyz,\n"
-                            "in the current folder). A failed run leaves OUTPUT as it was.\n";
+                            " with normals (default: INPUT's name + _normals.xyz, or\n"
+                            "_normals.las for a LAS input, in the current folder). A LAS output keeps every record\n"
+                            "of its LAS input and adds the normal as extra bytes NormalX, NormalY, NormalZ.\n"
+                            "A failed run leaves OUTPUT as it was.\n";
 
   po::variables_map options;
   Progress_bar bar(false);
@@ -329,12 +335,15 @@ int main(int argc, char** argv)
       check_orientation(options["orient"].as<std::string>());
 
     input = options["input"].as<std::string>();
+    const bool las_input = has_extension(input, las_extensions);
     output = options.count("output") ? options["output"].as<std::string>()
-                                     : fs::path(input).stem().string() + "_normals.xyz";
-    if(!has_extension(input, input_extensions))
+                                     : fs::path(input).stem().string() + (las_input ? "_normals.las" : "_normals.xyz");
+    if(!has_extension(input, input_extensions) && !las_input)
       throw po::error("cannot read '" + input + "': the input must be " + one_of(input_extensions));
     if(!has_extension(output, output_extensions))
       throw po::error("cannot write '" + output + "': the output must be " + one_of(output_extensions));
+    if(has_extension(output, { ".las" }) && !las_input)
+      throw po::error("a .las output needs a .las input, whose point records it keeps");
     if(options.count("confidence") && has_extension(output, { ".pwn" }))
       throw po::error("--confidence needs a .ply or .xyz output: .pwn holds points and normals only");
 
@@ -406,7 +415,32 @@ int main(int argc, char** argv)
     }
   }
   std::vector<Point_with_normal> points;
-  if(!CGAL::IO::read_points(input, std::back_inserter(points), CGAL::parameters::point_map(Point_map())))
+  std::optional<CGAL::RRHT::IO::LAS_file> las;
+  if(has_extension(input, las_extensions))
+  {
+    try
+    {
+      las.emplace(input);
+      std::vector<double> xyz;
+      const std::uint64_t chunk = 1 << 20;
+      points.reserve(std::size_t(las->size()));
+      for(std::uint64_t first = 0; first < las->size(); first += chunk)
+      {
+        const std::uint64_t count = (std::min)(chunk, las->size() - first);
+        xyz.resize(std::size_t(3 * count));
+        las->read_points(first, count, xyz.data());
+        for(std::size_t i = 0; i < count; ++i)
+          points.emplace_back(Point(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]), CGAL::NULL_VECTOR, 0.,
+                              std::size_t(first + i));
+      }
+    }
+    catch(const CGAL::RRHT::IO::LAS_error& e)
+    {
+      std::cerr << "rrht_normals: " << e.what() << std::endl;
+      return runtime_error;
+    }
+  }
+  else if(!CGAL::IO::read_points(input, std::back_inserter(points), CGAL::parameters::point_map(Point_map())))
   {
     std::cerr << "rrht_normals: cannot read points from '" << input << "' (malformed file)" << std::endl;
     return runtime_error;
@@ -448,7 +482,29 @@ int main(int argc, char** argv)
     without_normal += (std::get<1>(pn) == CGAL::NULL_VECTOR);
 
   // Write.
-  if(!write_atomically(output, points, int(options["precision"].as<long long>()), options.count("confidence") > 0))
+  if(has_extension(output, { ".las" }))
+  {
+    std::vector<double> normals(3 * points.size()), confidences(points.size());
+    for(const Point_with_normal& p : points)
+    {
+      const std::size_t i = std::get<3>(p);
+      const Vector& n = std::get<1>(p);
+      normals[3 * i] = n.x(), normals[3 * i + 1] = n.y(), normals[3 * i + 2] = n.z();
+      confidences[i] = std::get<2>(p);
+    }
+    try
+    {
+      CGAL::RRHT::IO::write_LAS_with_normals(*las, output, normals.data(),
+                                             options.count("confidence") ? confidences.data() : nullptr);
+    }
+    catch(const CGAL::RRHT::IO::LAS_error& e)
+    {
+      std::cerr << "rrht_normals: cannot write '" << output << "': " << e.what() << std::endl;
+      return runtime_error;
+    }
+  }
+  else if(!write_atomically(output, points, int(options["precision"].as<long long>()),
+                            options.count("confidence") > 0))
   {
     std::cerr << "rrht_normals: cannot write '" << output << "'" << std::endl;
     return runtime_error;

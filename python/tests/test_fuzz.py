@@ -11,7 +11,7 @@ from pathlib import Path
 import numpy as np
 
 from cgal_rrht.point_files import PointFile, PointFileError, write_points
-from conftest import DATA
+from conftest import DATA, ROOT
 
 POINTS = 300  # small files: a few hundred cases in seconds
 
@@ -24,7 +24,11 @@ def sources(tmp_path):
     write_points(tmp_path / "binary.ply", [("x", points[:, 0]), ("y", points[:, 1]), ("z", points[:, 2])])
     header = (f"ply\nformat ascii 1.0\ncomment a comment\nelement vertex {POINTS}\nproperty float x\n"
               "property float y\nproperty float z\nelement face 0\nproperty list uchar int vertex_indices\nend_header\n")
+    # A real LAS file (LAS 1.2, format 3) cut to its first POINTS records.
+    las = bytearray((ROOT / "test" / "data" / "las" / "simple.las").read_bytes()[: 227 + POINTS * 34])
+    las[107:111] = POINTS.to_bytes(4, "little")
     return {
+        "cloud.las": bytes(las),
         "cloud.xyz": text.encode(),
         "ascii.ply": (header + text).encode(),
         "binary.ply": (tmp_path / "binary.ply").read_bytes(),
