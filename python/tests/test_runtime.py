@@ -53,7 +53,10 @@ def test_other_python_threads_run_meanwhile():
 
 
 INTERRUPTED = """
-import sys, time
+import signal, sys, time
+# Python leaves SIGINT ignored when it starts so (a job started in the
+# background by a shell): the handler of a terminal's Ctrl-C, set anyway.
+signal.signal(signal.SIGINT, signal.default_int_handler)
 import numpy as np
 import pytest
 import cgal_rrht
