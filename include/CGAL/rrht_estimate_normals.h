@@ -85,8 +85,8 @@ namespace CGAL {
    The output normals are unit vectors, randomly oriented (use
    `CGAL::mst_orient_normals()` to orient them). Where no plane can be formed
    (fewer than 3 distinct points in the neighborhood, all of them collinear,
-   a neighborhood of radius below 1e-150, whose squared distances leave the
-   range of doubles, a neighborhood whose points span more orders of
+   a neighborhood of radius below 1e-150 or above 1e150, whose squared
+   distances leave the range of doubles, a neighborhood whose points span more orders of
    magnitude than double precision holds, or a point with a non-finite
    coordinate), the normal is the null vector
    `CGAL::NULL_VECTOR`. Points with a non-finite coordinate are not

@@ -52,11 +52,11 @@ struct Neighborhood
   bool complete = true;
 };
 
-/// The radius of the smallest neighborhood given a normal: below it, the
-/// squared distances and products of the coordinates that the estimators
-/// compute before they scale the points would leave the normal range of
-/// doubles (1e-308), and the result would be noise or NaN.
-constexpr double smallest_radius = 1e-150;
+/// Whether a neighborhood of this radius can be given a normal: below 1e-150
+/// or above 1e150 (or not a number), the squared distances and products of
+/// coordinates that the estimators compute before they scale the points
+/// would leave the normal range of doubles (1e-308 to 1e308).
+inline bool has_computable_radius(double radius) { return radius >= 1e-150 && radius <= 1e150; }
 
 /// Whether the three coordinates of `p` are finite.
 template <typename Point>

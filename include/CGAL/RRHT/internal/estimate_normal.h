@@ -116,9 +116,9 @@ inline Estimated_normal estimate_normal_of_found(std::uint64_t id, const Setting
                                                  const Adaptive_stages* stages = nullptr)
 {
   const Neighborhood& neighborhood = scratch.neighborhood;
-  // Fewer than 3 distinct points, or a ball too small to compute on
-  // (`smallest_radius`).
-  if(neighborhood.points.size() < 3 || !(neighborhood.radius >= smallest_radius))
+  // Fewer than 3 distinct points, or a ball too small or too large to
+  // compute on.
+  if(neighborhood.points.size() < 3 || !has_computable_radius(neighborhood.radius))
     return Estimated_normal{ Eigen::Vector3d::Zero(), 0. };
   if(stages == nullptr)
     return estimate_normal_of_neighborhood(id, settings, scratch);

@@ -143,7 +143,7 @@ inline Quadric_fit fit_quadric(const std::vector<Eigen::Vector3d>& points, doubl
   const double infinity = std::numeric_limits<double>::infinity();
   const Quadric_fit none{ Eigen::Vector3d::Zero(), infinity, infinity };
   const std::size_t size = points.size();
-  if(size <= 6 || !(radius >= smallest_radius))
+  if(size <= 6 || !has_computable_radius(radius))
     return none;
   const Principal_axes principal = principal_axes(points, [](std::size_t) { return true; });
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& axes = principal.axes;
@@ -539,8 +539,9 @@ void least_squares_first(const Pass_context& context, const Least_squares_first_
   // The noise around the point, its test and, for the supports, the ball
   // that holds its neighbors' neighborhoods.
   auto test = [&](std::size_t i, const std::vector<std::uint32_t>& neighbors, State& state, Scratch& scratch) {
-    // A neighborhood too small to compute on has no noise estimate.
-    state.noise_near = state.radius >= smallest_radius
+    // A neighborhood too small or too large to compute on has no noise
+    // estimate.
+    state.noise_near = has_computable_radius(state.radius)
                          ? state.radius * noise_of_neighbors(neighbors, noise, scratch.refit.work)
                          : std::numeric_limits<double>::infinity();
     one_sheet[i] = is_one_sheet(state.rms, state.noise_near, neighbors.size(), state.radius);
@@ -635,7 +636,7 @@ void least_squares_first(const Pass_context& context, const Least_squares_first_
       }
       e = options.stages ? recheck(id, cheap, *options.stages, scratch) : cheap;
     }
-    else if(options.stages && neighborhood.points.size() >= 3 && neighborhood.radius >= smallest_radius)
+    else if(options.stages && neighborhood.points.size() >= 3 && has_computable_radius(neighborhood.radius))
     {
       // The neighbors' plane where it holds most of the neighborhood, or
       // where the cheap stage agrees with it across a crease; the adaptive
