@@ -23,6 +23,7 @@
 #include "ply_header_check.h"
 
 #include <boost/algorithm/string/predicate.hpp>
+#include <boost/algorithm/string/split.hpp>
 #include <boost/program_options.hpp>
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -217,23 +218,69 @@ Vector three_numbers(const std::string& text)
   std::istringstream in(text);
   if(!(in >> x >> comma1 >> y >> comma2 >> z) || comma1 != ',' || comma2 != ',' || (in >> rest) ||
      !std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
-    throw po::error("the value of --orient must be consistent, mst, up, X,Y,Z or viewpoint:X,Y,Z, not '" + text + "'");
+    throw po::error("the value of --orient must be consistent, mst, up, X,Y,Z, viewpoint:X,Y,Z or "
+                    "viewpoint:NAME,NAME,NAME, not '" + text + "'");
   return Vector(x, y, z);
 }
 
+// The names of the fields of --orient=viewpoint:NAME,NAME,NAME, each
+// point's scanner position in the extra bytes of a LAS input; none for
+// --orient=viewpoint:X,Y,Z and the other values.
+std::vector<std::string> viewpoint_fields(const std::string& how)
+{
+  if(how.rfind("viewpoint:", 0) != 0)
+    return {};
+  std::vector<std::string> names;
+  boost::algorithm::split(names, how.substr(10), [](char c) { return c == ','; });
+  const bool numbers = std::all_of(names.begin(), names.end(), [](const std::string& name) {
+    std::istringstream in(name);
+    double value;
+    char rest;
+    return (in >> value) && !(in >> rest);
+  });
+  if(numbers || names.size() != 3 || std::any_of(names.begin(), names.end(), [](auto& n) { return n.empty(); }))
+    return {};
+  return names;
+}
+
 // Checks the value of --orient before anything is read.
-void check_orientation(const std::string& how)
+void check_orientation(const std::string& how, bool las_input)
 {
   if(how == "consistent" || how == "mst" || how == "up")
     return;
+  if(!viewpoint_fields(how).empty())
+  {
+    if(!las_input)
+      throw po::error("--orient=viewpoint:NAME,NAME,NAME reads each scanner position from the extra bytes of a "
+                      "LAS input; give a point, --orient=viewpoint:X,Y,Z, for this input");
+    return;
+  }
   const Vector v = three_numbers(how.rfind("viewpoint:", 0) == 0 ? how.substr(10) : how);
   if(how.rfind("viewpoint:", 0) != 0 && v == CGAL::NULL_VECTOR)
     throw po::error("the direction of --orient must not be null");
 }
 
-// Orients the normals as --orient says (see its help). The points without
-// normal stay, in their order, after the others.
-void orient(std::vector<Point_with_normal>& points, const std::string& how)
+// Each point's scanner position, from the x y z triples of its record
+// in a LAS input.
+struct Scanner_map
+{
+  typedef Point_with_normal key_type;
+  typedef Point value_type;
+  typedef Point reference;
+  typedef boost::readable_property_map_tag category;
+  const std::vector<double>* xyz;
+
+  friend Point get(const Scanner_map& map, const Point_with_normal& p)
+  {
+    const double* v = map.xyz->data() + 3 * std::get<3>(p);
+    return Point(v[0], v[1], v[2]);
+  }
+};
+
+// Orients the normals as --orient says (see its help), towards `scanners`
+// for --orient=viewpoint:NAME,NAME,NAME. The points without normal stay,
+// in their order, after the others.
+void orient(std::vector<Point_with_normal>& points, const std::string& how, const std::vector<double>& scanners)
 {
   const auto maps = CGAL::RRHT::parameters::point_map(Point_map()).normal_map(Normal_map());
   if(how == "consistent")
@@ -242,6 +289,8 @@ void orient(std::vector<Point_with_normal>& points, const std::string& how)
     CGAL::mst_orient_normals(points, 18, maps);
   else if(how == "up")
     CGAL::rrht_orient_normals<CGAL::Parallel_if_available_tag>(points, 0, maps.direction(Vector(0, 0, 1)));
+  else if(!viewpoint_fields(how).empty())
+    CGAL::rrht_orient_normals<CGAL::Parallel_if_available_tag>(points, 0, maps.viewpoint_map(Scanner_map{ &scanners }));
   else if(how.rfind("viewpoint:", 0) == 0)
     CGAL::rrht_orient_normals<CGAL::Parallel_if_available_tag>(
       points, 0, maps.viewpoint(CGAL::ORIGIN + three_numbers(how.substr(10))));
@@ -291,7 +340,9 @@ int main(int argc, char** argv)
      "significant digits written (1 to 17; 17 writes the computed doubles exactly)")
     ("orient", po::value<std::string>()->implicit_value("consistent"),
      "orient the normals: --orient (consistently, out of closed surfaces, with CGAL::rrht_orient_normals() and "
-     "18 neighbors), --orient=up, --orient=X,Y,Z (towards a direction), --orient=viewpoint:X,Y,Z, or "
+     "18 neighbors), --orient=up, --orient=X,Y,Z (towards a direction), --orient=viewpoint:X,Y,Z (a scanner's "
+     "position), --orient=viewpoint:NAME,NAME,NAME (each point's scanner position, in these extra-bytes fields of a "
+     "LAS input), or "
      "--orient=mst (CGAL::mst_orient_normals(), 18 neighbors)")
     ("confidence", "also write each normal's confidence, from 0 to 1: a PLY property 'confidence', a 7th "
                    "column in .xyz, extra bytes NormalConfidence in .las")
@@ -331,11 +382,10 @@ int main(int argc, char** argv)
     check_range(options, "seed", 0, 4294967295LL);      // so is the seed
     check_range(options, "threads", 0, 1024);
     check_range(options, "precision", 1, 17);
-    if(options.count("orient"))
-      check_orientation(options["orient"].as<std::string>());
-
     input = options["input"].as<std::string>();
     const bool las_input = has_extension(input, las_extensions);
+    if(options.count("orient"))
+      check_orientation(options["orient"].as<std::string>(), las_input);
     output = options.count("output") ? options["output"].as<std::string>()
                                      : fs::path(input).stem().string() + (las_input ? "_normals.las" : "_normals.xyz");
     if(!has_extension(input, input_extensions) && !las_input)
@@ -416,6 +466,8 @@ int main(int argc, char** argv)
   }
   std::vector<Point_with_normal> points;
   std::optional<CGAL::RRHT::IO::LAS_file> las;
+  const std::string how = options.count("orient") ? options["orient"].as<std::string>() : std::string();
+  std::vector<double> scanners; // x y z per record, for --orient=viewpoint:NAME,NAME,NAME
   if(has_extension(input, las_extensions))
   {
     try
@@ -432,6 +484,18 @@ int main(int argc, char** argv)
         for(std::size_t i = 0; i < count; ++i)
           points.emplace_back(Point(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]), CGAL::NULL_VECTOR, 0.,
                               std::size_t(first + i));
+      }
+      const std::vector<std::string> fields = viewpoint_fields(how);
+      if(!fields.empty())
+      {
+        std::vector<double> values(std::size_t(las->size()));
+        scanners.resize(3 * values.size());
+        for(std::size_t axis = 0; axis < 3; ++axis)
+        {
+          las->read_field(fields[axis], 0, las->size(), values.data());
+          for(std::size_t i = 0; i < values.size(); ++i)
+            scanners[3 * i + axis] = values[i];
+        }
       }
     }
     catch(const CGAL::RRHT::IO::LAS_error& e)
@@ -473,8 +537,8 @@ int main(int argc, char** argv)
     return runtime_error;
   }
   bar.finish();
-  if(options.count("orient"))
-    orient(points, options["orient"].as<std::string>());
+  if(!how.empty())
+    orient(points, how, scanners);
   timer.stop();
 
   std::size_t without_normal = 0;

@@ -162,6 +162,22 @@ TEST_CASE("LAS files that other software wrote are read", "[las]")
     offset += fields[i].second;
   }
   CHECK(points_of(extra) == xyz);
+  // Its fields of one number: Intensity (4-byte unsigned integers) and Time
+  // (8-byte ones), read as the bytes of the records say.
+  std::vector<unsigned char> records(extra.size() * extra.record_length());
+  extra.read_records(0, extra.size(), records.data());
+  std::vector<double> values(extra.size() - 10);
+  extra.read_field("Time", 10, values.size(), values.data());
+  for(std::size_t i = 0; i < values.size(); ++i)
+    CHECK(values[i] == double(layout::read_unsigned<std::uint64_t>(&records[(10 + i) * 61 + 53])));
+  extra.read_field("Intensity", 10, values.size(), values.data());
+  for(std::size_t i = 0; i < values.size(); ++i)
+    CHECK(values[i] == double(layout::read_unsigned<std::uint32_t>(&records[(10 + i) * 61 + 49])));
+  // The arrays and the undocumented bytes are not such fields.
+  for(const std::string name : { "Colors", "Reserved", "Nope" })
+    CHECK_THROWS_WITH(extra.read_field(name, 0, 1, values.data()),
+                      Catch::Matchers::Contains("no field of one number named '" + name + "'") &&
+                        Catch::Matchers::Contains("they have 'Intensity', 'Time'"));
 
   const LAS_file format6(data + "test1_4.las");
   CHECK(format6.point_format() == 6);

@@ -14,11 +14,12 @@ from typing import Any, Dict, Optional, Sequence, Tuple
 import numpy as np
 import numpy.typing as npt
 
-from . import estimate_normals
-from .point_files import PointFile, PointFileError, write_points
+from . import estimate_normals, orient_normals
+from .point_files import LAS_EXTENSIONS, PointFile, PointFileError, write_points
 
 _IDS_SUFFIX = ".ids.npy"
-_TILE_FORMATS = (".ply", ".npy")
+# A LAZ file is a tile too, refused with the commands that decompress it.
+_TILE_FORMATS = (".ply", ".npy") + LAS_EXTENSIONS
 _CHUNK_ROWS = 1 << 20
 
 class TileError(ValueError):
@@ -48,12 +49,16 @@ class Tile:
         return bool(np.all(np.asarray(self.lower) <= upper) and np.all(np.asarray(self.upper) >= lower))
 
 
-def scan_tile(path: str) -> Tuple[int, Tuple[float, float], Tuple[float, float], Optional[str]]:
-    """Checks a tile and returns its number of points, its xy bounding box and its ids file, or a TileError."""
+def scan_tile(path: str, fields: Sequence[str] = ()) -> Tuple[int, Tuple[float, float], Tuple[float, float],
+                                                                Optional[str]]:
+    """Checks a tile (and that it has the extra-bytes ``fields``) and returns its number of points, its xy bounding box
+    and its ids file, or a TileError."""
     if Path(path).suffix.lower() not in _TILE_FORMATS:
-        raise TileError(f"bad tile {path}: tiles are PLY or .npy files")
+        raise TileError(f"bad tile {path}: tiles are PLY, .npy or LAS files")
     try:
         points = PointFile(path)
+        for name in fields:
+            points.field(name, 0, 0)
         lower, upper, count = _xy_bounds(points)
     except PointFileError as error:
         raise TileError(f"bad tile {error}") from None
@@ -92,7 +97,11 @@ def estimate_tile(index: int, tiles: Sequence[Tile], halo: float, output: str, o
     every support lies inside what was loaded. Returns counts of points.
     """
     tile = tiles[index]
-    own = PointFile(tile.path).read()
+    options = dict(options)
+    # Each point's scanner position, in extra bytes of the tile: oriented at the end, point by point.
+    fields = options.pop("viewpoint_fields", None)
+    source = PointFile(tile.path)
+    own = source.read()
     own_ids = tile.ids()
     extent = _extent(tiles)
     confidence = options.get("return_confidence", False)
@@ -131,12 +140,26 @@ def estimate_tile(index: int, tiles: Sequence[Tile], halo: float, output: str, o
         whole = _covers(box_lower, box_upper, extent)
         pending = pending[~(_inside(again[2], np.full(len(pending), halo)) | whole)]
 
-    columns = [("x", own[:, 0]), ("y", own[:, 1]), ("z", own[:, 2]),
-               ("nx", normals[:, 0]), ("ny", normals[:, 1]), ("nz", normals[:, 2])]
-    if confidence:
-        columns.append(("confidence", confidences))
-    write_points(output, columns)
+    if fields:
+        normals = orient_normals(own, normals, viewpoint=scanner_positions(source, fields),
+                                 threads=options.get("threads"))
+    if source.las is not None:
+        # Every record kept byte for byte, with the normal as extra bytes, as rrht_normals writes it.
+        source.las.write_with_normals(output, normals, confidences)
+    else:
+        columns = [("x", own[:, 0]), ("y", own[:, 1]), ("z", own[:, 2]),
+                   ("nx", normals[:, 0]), ("ny", normals[:, 1]), ("nz", normals[:, 2])]
+        if confidence:
+            columns.append(("confidence", confidences))
+        write_points(output, columns)
     return {"points": len(own), "halo": halo_points, "estimated": estimated, "rounds": rounds}
+
+
+def scanner_positions(source: PointFile, fields: Sequence[str], start: int = 0,
+                      stop: Optional[int] = None) -> npt.NDArray[np.float64]:
+    """The scanner position of the points of rows ``start`` to ``stop`` of a LAS file, from its extra-bytes
+    ``fields`` (three names: x, y, z), as an array (n, 3)."""
+    return np.stack([source.field(name, start, stop) for name in fields], axis=1)
 
 
 def _estimate(points: np.ndarray, ids: np.ndarray, neighbors: np.ndarray, neighbor_ids: np.ndarray,

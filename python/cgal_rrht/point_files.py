@@ -5,6 +5,8 @@
 Binary PLY (as ``rrht_normals`` writes it) and ``.npy`` files are memory-mapped,
 so that a task reads the points of a neighboring tile that it needs without
 holding the whole tile (Open3D and NumPy's text readers load whole files).
+LAS files are read by record ranges with the reader of ``rrht_normals``
+(``CGAL::RRHT::IO::LAS_file``, bound as ``cgal_rrht._core.LASFile``).
 Text files (``.xyz``, ``.pwn``, ASCII PLY and ``.off``, the other files that
 ``rrht_normals`` reads) are read in chunks of rows. Files are written
 through a temporary file renamed at the end, so that a failed write never
@@ -22,10 +24,14 @@ from typing import Iterator, List, Optional, Tuple
 import numpy as np
 import numpy.typing as npt
 
+from ._core import LASError, LASFile
+
 __all__ = ["PointFile", "PointFileError", "write_points", "EXTENSIONS"]
 
-#: The extensions of the files read (any letter case).
-EXTENSIONS = (".ply", ".npy", ".xyz", ".pwn", ".off")
+#: The extensions of the files read (any letter case); a LAZ file is
+#: refused with the commands that decompress it.
+EXTENSIONS = (".ply", ".npy", ".xyz", ".pwn", ".off", ".las")
+LAS_EXTENSIONS = (".las", ".laz")
 
 _PLY_TYPES = {
     "char": "i1", "int8": "i1", "uchar": "u1", "uint8": "u1",
@@ -63,7 +69,8 @@ class PointFile:
         properties ``x``, ``y``, ``z`` (other properties are ignored), a
         ``.npy`` array of shape (N, 3) or more columns (the first three are
         the points), a text ``.xyz`` / ``.pwn`` file (three or more numbers
-        a line) or an OFF file (its vertices).
+        a line), an OFF file (its vertices) or an uncompressed LAS file,
+        1.0 to 1.4, point formats 0 to 10 (its points, X * scale + offset).
 
     Raises
     ------
@@ -79,6 +86,7 @@ class PointFile:
             raise PointFileError(f"{self.path}: no such file")
         self._rows: Optional[np.ndarray] = None  # memory-mapped: binary PLY and .npy
         self._text: Optional[_TextLayout] = None
+        self.las: Optional[LASFile] = None
         self._count: Optional[int] = None  # of a text file, counted when asked for
         try:
             if suffix == ".ply":
@@ -89,14 +97,20 @@ class PointFile:
                 self._text = _TextLayout()
             elif suffix == ".off":
                 self._text = _off_layout(self.path)
+            elif suffix in LAS_EXTENSIONS:
+                self.las = LASFile(str(self.path))
             else:
                 raise PointFileError(f"unknown format: use one of {', '.join(EXTENSIONS)}")
         except PointFileError as error:
             raise PointFileError(f"{self.path}: {error}") from None
+        except LASError as error:  # its message names the file
+            raise PointFileError(str(error)) from None
         except (OSError, ValueError) as error:
             raise PointFileError(f"{self.path}: cannot be read: {error}") from None
         if self._rows is not None:
             self._count = len(self._rows)
+        elif self.las is not None:
+            self._count = len(self.las)
         elif self._text.count is not None:
             self._count = self._text.count  # announced by the header; a shorter file fails when read
 
@@ -109,7 +123,10 @@ class PointFile:
     def names(self) -> Tuple[str, ...]:
         """The names of the columns of :meth:`table`: a PLY file's vertex
         properties, in the file's order; ``x``, ``y``, ``z``, then ``c3``,
-        ``c4``... for a ``.npy`` array; ``x``, ``y``, ``z`` for the other files."""
+        ``c4``... for a ``.npy`` array; ``x``, ``y``, ``z`` for the other files
+        (:meth:`field` reads a LAS file's extra bytes)."""
+        if self.las is not None:
+            return ("x", "y", "z")
         if self._text is not None:
             return self._text.columns
         if self._rows.dtype.names:
@@ -119,6 +136,8 @@ class PointFile:
     def table(self, start: int = 0, stop: Optional[int] = None) -> npt.NDArray[np.float64]:
         """Rows ``start`` to ``stop`` (default: the end) of every column of
         :attr:`names`, as a float64 array (n, len(names))."""
+        if self.las is not None:
+            return self.read(start, stop)
         if self._text is not None:
             return self._text_rows(start, stop, tuple(range(len(self._text.columns))))
         rows = self._rows[start:stop]
@@ -128,6 +147,8 @@ class PointFile:
 
     def read(self, start: int = 0, stop: Optional[int] = None) -> npt.NDArray[np.float64]:
         """The points of rows ``start`` to ``stop`` (default: the end), as a float64 array (n, 3)."""
+        if self.las is not None:
+            return self.las.read_points(start, stop)
         if self._text is not None:
             return self._text_rows(start, stop, self._text.xyz)
         rows = self._rows[start:stop]
@@ -137,6 +158,22 @@ class PointFile:
                 out[:, column] = rows[name]
             return out
         return np.array(rows[:, :3], dtype=np.float64)
+
+    def field(self, name: str, start: int = 0, stop: Optional[int] = None) -> npt.NDArray[np.float64]:
+        """The extra-bytes field ``name`` of a LAS file's records ``start`` to
+        ``stop``, scaled and offset as its descriptor says, as a float64 array (n,).
+
+        Raises
+        ------
+        PointFileError
+            If the file is not a LAS file, or has no such field of one number.
+        """
+        if self.las is None:
+            raise PointFileError(f"{self.path}: not a LAS file: only a LAS file has extra-bytes fields")
+        try:
+            return self.las.read_field(name, start, stop)
+        except LASError as error:
+            raise PointFileError(str(error)) from None
 
     def chunks(self, rows: int = 1 << 20) -> Iterator[Tuple[int, npt.NDArray[np.float64]]]:
         """The points by chunks of ``rows`` rows, each with the row it starts at."""

@@ -2,9 +2,9 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """Normals of clouds larger than memory: tiles with halos, on Dask.
 
-The cloud is a set of tiles: the files of a folder (PLY or ``.npy``),
-or one large file cut into square tiles of the xy plane (``split()``, or the
-command ``python -m cgal_rrht.tiles split``). One Dask task per tile loads the
+The cloud is a set of tiles: the files of a folder (PLY, ``.npy`` or LAS:
+a survey as it is delivered), or one large file cut into square tiles of the
+xy plane (``split()``, or the command ``python -m cgal_rrht.tiles split``). One Dask task per tile loads the
 tile and a halo, the points of the other tiles within a margin of its xy
 bounding box (corners included), estimates the normals of them all with the
 points' global ids (``estimate_normals(..., ids=...)``), keeps those of its own
@@ -14,8 +14,13 @@ the loaded region, the point is estimated again with a halo wide enough. So
 every normal is, bit for bit, the one the whole cloud in memory gives, for any
 tiling and any number of workers. The normals can be oriented on the way,
 towards a direction or a viewpoint, which looks at one point at a time: the
-same, bit for bit, as ``orient_normals()`` on the whole cloud. A consistent
-orientation needs the whole cloud and is refused.
+same, bit for bit, as ``orient_normals()`` on the whole cloud; in a LAS
+survey, each point can be oriented towards its own scanner position, read
+from extra bytes. A consistent orientation needs the whole cloud and is refused.
+
+A LAS tile gives a LAS file: its records kept byte for byte, with the
+normals as extra bytes ``NormalX``, ``NormalY``, ``NormalZ`` (and
+``NormalConfidence``), written by the same code as ``rrht_normals``.
 
 The global id of a point is its row in the tiles taken in the order of their
 names, unless the tile ``NAME.EXT`` has a file ``NAME.ids.npy`` next to it
@@ -43,10 +48,10 @@ from typing import Any, Dict, List, Optional, Sequence, Tuple
 
 import numpy as np
 
-from . import AGGREGATIONS, SAMPLINGS, SETTINGS, _estimation_orientation, _from_setting
+from . import AGGREGATIONS, SAMPLINGS, SETTINGS, _estimation_orientation, _from_setting, orient_normals
 from ._tile_task import _CHUNK_ROWS, _IDS_SUFFIX, _TILE_FORMATS, Tile, TileError, _ids_path, _xy_bounds, estimate_tile, \
-    scan_tile
-from .point_files import PointFile, PointFileError, ply_header
+    scan_tile, scanner_positions
+from .point_files import LAS_EXTENSIONS, PointFile, PointFileError, ply_header
 
 __all__ = ["run", "split", "list_tiles", "TileError", "PointFileError", "Tile"]
 
@@ -54,9 +59,9 @@ _NO_CONSISTENT = (
     "a consistent orientation cannot be made tile by tile: each tile sees only its part of the surface, so the "
     "sign of each tile, and of each of its pieces, would be chosen on its own and neighboring tiles could disagree "
     "(and a survey's open surface has no outside to point to). Orient towards a direction instead ('up' for aerial "
-    "LiDAR) or a viewpoint; with the scanner position of each point, orient each output tile with "
-    "cgal_rrht.orient_normals(points, normals, viewpoint=positions); a cloud that fits in memory can be oriented "
-    "consistently with cgal_rrht.orient_normals(points, normals)")
+    "LiDAR), a viewpoint, or each point's scanner position (viewpoint=('ScannerX', 'ScannerY', 'ScannerZ'): the "
+    "names of extra-bytes fields of LAS tiles); a cloud that fits in memory can be oriented consistently with "
+    "cgal_rrht.orient_normals(points, normals)")
 
 
 # --------------------------------------------------------------------------
@@ -64,39 +69,41 @@ _NO_CONSISTENT = (
 
 
 def list_tiles(folder: "os.PathLike[str] | str") -> List[Path]:
-    """The tile files of a folder (PLY and ``.npy``, not the ids files), by name."""
+    """The tile files of a folder (PLY, ``.npy`` and LAS, not the ids files), by name."""
     folder = Path(folder)
     if not folder.is_dir():
         raise TileError(f"{folder}: no such folder")
     files = sorted(p for p in folder.iterdir()
                    if p.suffix.lower() in _TILE_FORMATS and not p.name.lower().endswith(_IDS_SUFFIX))
     if not files:
-        raise TileError(f"{folder}: no tile (.ply or .npy file) in it")
+        raise TileError(f"{folder}: no tile (.ply, .npy or .las file) in it")
     return files
 
 
 def run(input: "os.PathLike[str] | str", output: "os.PathLike[str] | str", *, scheduler: Optional[str] = None,
         workers: Optional[int] = None, threads: int = 1, tile_size: Optional[float] = None,
         halo: Optional[float] = None, progress: bool = True, return_confidence: bool = False,
-        orient: Optional[Any] = None, viewpoint: Optional[Sequence[float]] = None,
+        orient: Optional[Any] = None, viewpoint: Optional[Sequence[Any]] = None,
         **estimator: Any) -> Dict[str, int]:
     """Estimates the normals of a tiled cloud on Dask, tile by tile, and orients them if asked.
 
     Parameters
     ----------
     input : path-like
-        A folder of tiles (PLY or ``.npy`` files: binary PLY and ``.npy``
-        are memory-mapped, ASCII PLY is parsed again wherever a halo needs
-        it), or one point file (PLY, ``.npy``, ``.xyz``, ``.pwn``, ``.off``),
-        cut first into tiles of ``tile_size`` in a temporary folder next to
-        ``output``.
+        A folder of tiles (PLY, ``.npy`` or uncompressed LAS files: binary
+        PLY and ``.npy`` are memory-mapped, LAS is read by record ranges,
+        ASCII PLY is parsed again wherever a halo needs it), or one point
+        file (PLY, ``.npy``, ``.xyz``, ``.pwn``, ``.off``, LAS), cut first
+        into tiles of ``tile_size`` in a temporary folder next to ``output``.
     output : path-like
         For a folder of tiles, a folder that receives one file per tile, of
-        the same name and format, with the points and their normals (``x y z
-        nx ny nz`` and ``confidence`` if asked for), row by row as in the
-        tile. For one input file, one ``.ply`` or ``.npy`` file of all the
-        points in the order of the input. Each file is written whole or not
-        at all.
+        the same name and format: for a PLY or ``.npy`` tile, the points and
+        their normals (``x y z nx ny nz`` and ``confidence`` if asked for),
+        row by row as in the tile; for a LAS tile, its records byte for
+        byte with the normals as extra bytes, as ``rrht_normals`` writes
+        them. For one input file, one ``.ply`` or ``.npy`` file of all the
+        points in the order of the input, or a ``.las`` file for a LAS
+        input. Each file is written whole or not at all.
     scheduler : str, optional
         The address of a Dask scheduler (``tcp://host:8786``), whose workers
         import ``cgal_rrht`` and see the files at the same paths; default: a
@@ -126,12 +133,13 @@ def run(input: "os.PathLike[str] | str", output: "os.PathLike[str] | str", *, sc
         oriented. ``"consistent"`` is refused, before anything runs: a tile
         sees only its part of the cloud, and the sign of each tile would be
         chosen on its own (see the user manual, "From Python").
-    viewpoint : sequence of 3 numbers, optional
+    viewpoint : sequence of 3 numbers, or of 3 names, optional
         Orient the normals towards this point (a scanner's position), as
-        ``estimate_normals(viewpoint=...)``; not with ``orient``. The
-        position of the sensor of each point is not read from the tiles:
-        orient each output tile with ``cgal_rrht.orient_normals(points,
-        normals, viewpoint=positions)``, which gives the same result.
+        ``estimate_normals(viewpoint=...)``, or, given the names of three
+        extra-bytes fields of LAS tiles (``("ScannerX", "ScannerY",
+        "ScannerZ")``), each normal towards its point's own scanner
+        position, read from them as ``rrht_normals
+        --orient=viewpoint:NAME,NAME,NAME`` reads them; not with ``orient``.
     **estimator
         The parameters of ``cgal_rrht.estimate_normals()`` (``k``,
         ``setting``, ``radius``, ``planes``, ``refit``, ``seed``...).
@@ -146,11 +154,13 @@ def run(input: "os.PathLike[str] | str", output: "os.PathLike[str] | str", *, sc
     Raises
     ------
     TileError
-        Before anything is written, for a missing, malformed or empty tile,
-        naming it.
+        Before anything is written, for a missing, malformed or empty tile
+        (a LAZ tile, with the commands that decompress it), or one without
+        the fields of ``viewpoint``, naming it.
     ValueError
         Before anything runs, for ``orient="consistent"``, a ``viewpoint``
-        other than one point, and what ``estimate_normals()`` refuses in
+        other than one point or three names, names of fields for an input
+        file that is not LAS, and what ``estimate_normals()`` refuses in
         ``orient`` and ``viewpoint``.
     """
     for name in ("ids", "neighbors", "neighbor_ids", "return_support", "progress"):
@@ -158,12 +168,16 @@ def run(input: "os.PathLike[str] | str", output: "os.PathLike[str] | str", *, sc
             raise TypeError(f"run() sets {name} itself: each task passes its tile's ids and halo")
     if isinstance(orient, str) and orient == "consistent":
         raise ValueError(_NO_CONSISTENT)
-    if viewpoint is not None and np.shape(viewpoint) != (3,):
-        raise ValueError(f"viewpoint must be one point, 3 numbers, not of shape {np.shape(viewpoint)}: to orient "
-                         "towards the sensor position of each point, orient each output tile with "
-                         "cgal_rrht.orient_normals(points, normals, viewpoint=positions)")
+    fields = None
+    if viewpoint is not None and not isinstance(viewpoint, str) and np.shape(viewpoint) == (3,) and \
+            all(isinstance(name, str) for name in viewpoint):
+        fields, viewpoint = tuple(viewpoint), None
+    elif viewpoint is not None and (isinstance(viewpoint, str) or np.shape(viewpoint) != (3,)):
+        given = repr(viewpoint) if isinstance(viewpoint, str) else f"of shape {np.shape(viewpoint)}"
+        raise ValueError(f"viewpoint must be one point, 3 numbers, or, for each point's scanner position, the names "
+                         f"of 3 extra-bytes fields of LAS tiles, not {given}")
     # The checks of estimate_normals(), made now rather than by each task.
-    _estimation_orientation(orient, viewpoint, 0, threads, with_neighbors=True)
+    _estimation_orientation(orient, np.zeros(3) if fields else viewpoint, 0, threads, with_neighbors=True)
     input, output = Path(input), Path(output)
     if not input.exists():
         raise TileError(f"{input}: no such file or folder")
@@ -174,22 +188,30 @@ def run(input: "os.PathLike[str] | str", output: "os.PathLike[str] | str", *, sc
             raise ValueError(f"{output}: the output folder must not be the folder of the tiles")
         if tile_size is not None:
             raise ValueError("tile_size applies to one input file, not to a folder of tiles")
-        return _run_tiles(list_tiles(input), output, scheduler, workers, halo, progress, options)
-    if output.suffix.lower() not in _TILE_FORMATS:
-        raise ValueError(f"{output}: the output of one input file is a .ply or .npy file")
-    PointFile(input)  # a clear error now for a missing or unreadable file
+        return _run_tiles(list_tiles(input), output, scheduler, workers, halo, progress, options, fields)
+    las_input = input.suffix.lower() in LAS_EXTENSIONS
+    if output.suffix.lower() not in (".ply", ".npy", ".las"):
+        raise ValueError(f"{output}: the output of one input file is a .ply, .npy or .las file")
+    if output.suffix.lower() == ".las" and not las_input:
+        raise ValueError(f"{output}: a .las output needs a LAS input, whose point records it keeps")
+    if fields and not las_input:
+        raise ValueError("viewpoint names fields of the extra bytes of a LAS input; give a point for this input")
+    source = PointFile(input)  # a clear error now for a missing or unreadable file
+    for name in fields or ():
+        source.field(name, 0, 0)
     work = Path(tempfile.mkdtemp(prefix=f".{output.name}.", dir=output.parent if output.parent.is_dir() else None))
     try:
-        split(input, work / "tiles", tile_size=tile_size, suffix=output.suffix.lower())
+        split(input, work / "tiles", tile_size=tile_size, suffix=".npy" if las_input else output.suffix.lower())
         summary = _run_tiles(list_tiles(work / "tiles"), work / "normals", scheduler, workers, halo, progress, options)
-        _merge(list_tiles(work / "tiles"), work / "normals", output, return_confidence)
+        _merge(list_tiles(work / "tiles"), work / "normals", output, return_confidence, source, fields)
         return summary
     finally:
         shutil.rmtree(work, ignore_errors=True)
 
 
 def _run_tiles(paths: List[Path], output: Path, scheduler: Optional[str], workers: Optional[int],
-               halo: Optional[float], progress: bool, options: Dict[str, Any]) -> Dict[str, int]:
+               halo: Optional[float], progress: bool, options: Dict[str, Any],
+               fields: Optional[Tuple[str, ...]] = None) -> Dict[str, int]:
     from distributed import Client, LocalCluster
     from distributed import progress as progress_bar
 
@@ -204,7 +226,9 @@ def _run_tiles(paths: List[Path], output: Path, scheduler: Optional[str], worker
         cluster, client = None, Client(scheduler)
     try:
         names = [str(p) for p in paths]
-        scans = client.gather(client.map(scan_tile, names, pure=False))
+        scans = client.gather(client.map(scan_tile, names, fields=fields or (), pure=False))
+        if fields:
+            options = dict(options, viewpoint_fields=fields)
         tiles, first = [], 0
         for path, (count, lower, upper, ids_path) in zip(names, scans):
             tiles.append(Tile(path, count, first, ids_path, lower, upper))
@@ -312,29 +336,53 @@ def _wrap(raw: Path, path: Path, count: int, columns: int) -> None:
     raw.unlink()
 
 
-def _merge(tiles: List[Path], normals: Path, output: Path, confidence: bool) -> None:
-    """Writes the normals of the tiles into one file, each point at the row of its id."""
+def _merge(tiles: List[Path], normals: Path, output: Path, confidence: bool, source: PointFile,
+           fields: Optional[Tuple[str, ...]] = None) -> None:
+    """Writes the normals of the tiles (in the folder ``normals``) into one file, each point at the row of its id,
+    oriented towards each point's scanner position in the extra-bytes ``fields`` of ``source`` if they are given.
+    A LAS output is ``source``'s records with the normals; the others, the points and their normals."""
     names = ["x", "y", "z", "nx", "ny", "nz"] + (["confidence"] if confidence else [])
     count = sum(len(PointFile(t)) for t in tiles)
     temporary = output.with_name(f".{output.name}.partial.{os.getpid()}{output.suffix}")
+    las = output.suffix.lower() == ".las"
     try:
-        with open(temporary, "wb") as stream:
-            if output.suffix.lower() == ".ply":
-                stream.write(ply_header(count, names))
-            else:
-                np.lib.format.write_array_header_1_0(
-                    stream, {"descr": "<f8", "fortran_order": False, "shape": (count, len(names))})
-            offset = stream.tell()
-            stream.truncate(offset + 8 * len(names) * count)
-        table = np.memmap(temporary, dtype="<f8", mode="r+", offset=offset, shape=(count, len(names)))
+        confidences = None
+        if las:  # the normals and the confidences, in arrays on disk, in the folder of the run
+            table = np.lib.format.open_memmap(normals / "normals.npy", mode="w+", dtype="<f8", shape=(count, 3))
+            if confidence:
+                confidences = np.lib.format.open_memmap(normals / "confidences.npy", mode="w+", dtype="<f8",
+                                                        shape=(count,))
+        else:
+            with open(temporary, "wb") as stream:
+                if output.suffix.lower() == ".ply":
+                    stream.write(ply_header(count, names))
+                else:
+                    np.lib.format.write_array_header_1_0(
+                        stream, {"descr": "<f8", "fortran_order": False, "shape": (count, len(names))})
+                offset = stream.tell()
+                stream.truncate(offset + 8 * len(names) * count)
+            table = np.memmap(temporary, dtype="<f8", mode="r+", offset=offset, shape=(count, len(names)))
+        normal_columns = slice(0, 3) if las else slice(3, 6)
         for tile in tiles:
             ids = np.load(_ids_path(tile), mmap_mode="r")
             for start in range(0, len(ids), _CHUNK_ROWS):
                 rows = _columns(normals / tile.name, start, start + _CHUNK_ROWS, len(names))
-                table[np.asarray(ids[start : start + len(rows)])] = rows
+                rows_ids = np.asarray(ids[start : start + len(rows)])
+                table[rows_ids] = rows[:, 3:6] if las else rows
+                if confidences is not None:
+                    confidences[rows_ids] = rows[:, 6]
+        for start in range(0, count if fields else 0, _CHUNK_ROWS):
+            block = table[start : start + _CHUNK_ROWS]
+            block[:, normal_columns] = orient_normals(
+                source.read(start, start + len(block)), block[:, normal_columns],
+                viewpoint=scanner_positions(source, fields, start, start + len(block)))
         table.flush()
-        del table
-        os.replace(temporary, output)
+        if las:
+            source.las.write_with_normals(str(output), table, confidences)
+            del table, confidences
+        else:
+            del table
+            os.replace(temporary, output)
     finally:
         if temporary.exists():
             temporary.unlink()
@@ -353,14 +401,15 @@ def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="python -m cgal_rrht.tiles",
         description="Normals of a cloud larger than memory, tile by tile with halos, on Dask: the same normals, "
-        "bit for bit, as the whole cloud in memory. INPUT: a folder of tiles (PLY or .npy, the ids "
+        "bit for bit, as the whole cloud in memory. INPUT: a folder of tiles (PLY, .npy or LAS, the ids "
         "being the rows of the tiles in name order, or NAME.ids.npy), or one point file "
-        "(.ply, .npy, .xyz, .pwn, .off) cut into tiles first. OUTPUT: a folder of tiles with normals, or one .ply or "
-        ".npy file for one input file. 'python -m cgal_rrht.tiles split INPUT FOLDER --tile-size S' only "
-        "cuts a file into tiles.",
+        "(.ply, .npy, .xyz, .pwn, .off, .las) cut into tiles first. OUTPUT: a folder of tiles with normals (a LAS "
+        "tile's records with the normals as extra bytes), or one .ply, .npy or .las file for one input file. "
+        "'python -m cgal_rrht.tiles split INPUT FOLDER --tile-size S' only cuts a file into tiles. Exit codes: 1 "
+        "for an input that cannot be read, 2 for a wrong command line.",
     )
     parser.add_argument("input", help="a folder of tiles, or one point file")
-    parser.add_argument("output", help="a folder (for a folder of tiles) or a .ply or .npy file")
+    parser.add_argument("output", help="a folder (for a folder of tiles) or a .ply, .npy or .las file")
     parser.add_argument("--scheduler", metavar="ADDRESS", help="a Dask scheduler (default: a LocalCluster)")
     parser.add_argument("--workers", type=int, help="worker processes of the LocalCluster (default: one per core)")
     parser.add_argument("--threads", type=int, default=1, help="threads of each task's estimation (default 1)")
@@ -369,10 +418,12 @@ def _parser() -> argparse.ArgumentParser:
     parser.add_argument("--halo", type=float, help="first margin loaded around each tile (default: from the density)")
     parser.add_argument("--confidence", action="store_true", help="also write each normal's confidence")
     parser.add_argument("--orient", nargs="?", const="consistent", type=_orientation_flag,
-                        metavar="up|X,Y,Z|viewpoint:X,Y,Z",
+                        metavar="up|X,Y,Z|viewpoint:X,Y,Z|viewpoint:NAME,NAME,NAME",
                         help="orient the normals: --orient=up (aerial surveys), --orient=X,Y,Z towards a direction, "
-                        "--orient=viewpoint:X,Y,Z towards a scanner position (the values of rrht_normals --orient; "
-                        "its consistent orientation, --orient alone, cannot be made tile by tile and is refused)")
+                        "--orient=viewpoint:X,Y,Z towards a scanner position, --orient=viewpoint:NAME,NAME,NAME "
+                        "towards each point's scanner position, in these extra-bytes fields of LAS tiles (the values "
+                        "of rrht_normals --orient; its consistent orientation, --orient alone, cannot be made tile "
+                        "by tile and is refused)")
     parser.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
     estimator = parser.add_argument_group("the estimator (as rrht_normals and cgal_rrht.estimate_normals)")
     estimator.add_argument("-k", "--neighbors", type=int, default=100, help="K, the number of neighbors (default 100)")
@@ -399,17 +450,20 @@ def _parser() -> argparse.ArgumentParser:
 
 
 def _orientation_flag(text: str) -> Tuple[str, Any]:
-    """The value of ``--orient`` as ("orient", value) or ("viewpoint", point), in the syntax of ``rrht_normals``."""
+    """The value of ``--orient`` as ("orient", value) or ("viewpoint", point or field names), in the syntax of
+    ``rrht_normals``."""
     if text in ("consistent", "mst", "up"):
         # Both consistent orientations of rrht_normals are refused by run(), with the reason.
         return ("orient", "up" if text == "up" else "consistent")
-    keyword, numbers = ("viewpoint", text[len("viewpoint:"):]) if text.startswith("viewpoint:") else ("orient", text)
+    keyword, words = ("viewpoint", text[len("viewpoint:"):]) if text.startswith("viewpoint:") else ("orient", text)
+    words = words.split(",")
     try:
-        values = tuple(float(number) for number in numbers.split(","))
-    except ValueError:
-        values = ()
+        values: Tuple[Any, ...] = tuple(float(word) for word in words)
+    except ValueError:  # the names of three fields, as a viewpoint
+        values = tuple(words) if keyword == "viewpoint" and all(words) else ()
     if len(values) != 3:
-        raise argparse.ArgumentTypeError(f"must be up, X,Y,Z or viewpoint:X,Y,Z, not {text!r}")
+        raise argparse.ArgumentTypeError(
+            f"must be up, X,Y,Z, viewpoint:X,Y,Z or viewpoint:NAME,NAME,NAME, not {text!r}")
     return (keyword, values)
 
 
@@ -438,7 +492,10 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
                       presampling=args.presampling, aggregation=args.aggregation, cluster_angle=args.cluster_angle,
                       confidence_interval=not args.no_confidence_interval, adaptive=args.adaptive,
                       least_squares_first=args.least_squares_first, refit=args.refit, seed=args.seed)
-    except (TileError, PointFileError, ValueError, TypeError) as error:
+    except (TileError, PointFileError) as error:  # an input that cannot be read, as rrht_normals says it
+        print(f"error: {error}", file=sys.stderr)
+        return 1
+    except (ValueError, TypeError) as error:
         print(f"error: {error}", file=sys.stderr)
         return 2
     if not args.quiet:

@@ -4,11 +4,14 @@
 // cgal_rrht._core: CGAL::rrht_estimate_normals() and CGAL::rrht_orient_normals()
 // on NumPy arrays. The documented Python API is cgal_rrht.estimate_normals() and
 // cgal_rrht.orient_normals() (cgal_rrht/__init__.py), which check the arrays and
-// call the functions below.
+// call the functions below. LASFile is CGAL::RRHT::IO's LAS reader and writer,
+// which cgal_rrht.point_files reads and writes LAS files with.
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/rrht_estimate_normals.h>
 #include <CGAL/rrht_orient_normals.h>
+#include <CGAL/RRHT/IO/LAS_file.h>
+#include <CGAL/RRHT/IO/write_LAS_with_normals.h>
 
 #include <pybind11/functional.h>
 #include <pybind11/numpy.h>
@@ -388,6 +391,80 @@ void orient_normals(const py::array_t<double, py::array::c_style>& points,
   });
 }
 
+/// Records `start` to `stop` (clipped to the file, as a slice) of `file`, as
+/// a first record and a count.
+std::pair<std::uint64_t, std::uint64_t> record_range(const CGAL::RRHT::IO::LAS_file& file, std::uint64_t start,
+                                                     std::optional<std::uint64_t> stop)
+{
+  const std::uint64_t end = (std::min)(stop.value_or(file.size()), file.size());
+  const std::uint64_t first = (std::min)(start, end);
+  return { first, end - first };
+}
+
+void bind_LAS_file(py::module_& m)
+{
+  using CGAL::RRHT::IO::LAS_file;
+  py::register_exception<CGAL::RRHT::IO::LAS_error>(m, "LASError", PyExc_ValueError);
+  py::class_<LAS_file>(m, "LASFile",
+                       "An uncompressed LAS file (1.0 to 1.4, point formats 0 to 10), checked when opened "
+                       "(CGAL::RRHT::IO::LAS_file); LASError says what cannot be read.")
+    .def(py::init<const std::string&>(), py::arg("path"), py::call_guard<py::gil_scoped_release>())
+    .def("__len__", [](const LAS_file& file) { return file.size(); })
+    .def_property_readonly("version", [](const LAS_file& file) { return py::make_tuple(1, file.version_minor()); })
+    .def_property_readonly("point_format", &LAS_file::point_format)
+    .def_property_readonly("fields",
+                           [](const LAS_file& file) {
+                             std::vector<std::string> names;
+                             for(const auto& field : file.extra_bytes())
+                               if(field.data_type >= 1 && field.data_type <= 10)
+                                 names.push_back(field.name);
+                             return names;
+                           },
+                           "The names of the extra bytes' fields of one number, in the records' order.")
+    .def(
+      "read_points",
+      [](const LAS_file& file, std::uint64_t start, std::optional<std::uint64_t> stop) {
+        const auto [first, count] = record_range(file, start, stop);
+        py::array_t<double> xyz({ py::ssize_t(count), py::ssize_t(3) });
+        double* out = xyz.mutable_data();
+        py::gil_scoped_release release;
+        file.read_points(first, count, out);
+        return xyz;
+      },
+      py::arg("start") = 0, py::arg("stop") = py::none(),
+      "The points of records `start` to `stop` (default: the end), as a float64 array (n, 3): X * scale + offset.")
+    .def(
+      "read_field",
+      [](const LAS_file& file, const std::string& name, std::uint64_t start, std::optional<std::uint64_t> stop) {
+        file.extra_bytes_field(name); // a LASError now if there is none
+        const auto [first, count] = record_range(file, start, stop);
+        py::array_t<double> values(py::ssize_t{ py::ssize_t(count) });
+        double* out = values.mutable_data();
+        py::gil_scoped_release release;
+        file.read_field(name, first, count, out);
+        return values;
+      },
+      py::arg("name"), py::arg("start") = 0, py::arg("stop") = py::none(),
+      "The extra-bytes field `name` of records `start` to `stop`, scaled and offset as its descriptor says, as "
+      "a float64 array (n,).")
+    .def(
+      "write_with_normals",
+      [](const LAS_file& file, const std::string& path, const py::array_t<double, py::array::c_style>& normals,
+         const std::optional<py::array_t<double, py::array::c_style>>& confidences) {
+        check_rows(normals, std::size_t(file.size()), "normals");
+        if(confidences && (confidences->ndim() != 1 || std::uint64_t(confidences->shape(0)) != file.size()))
+          throw py::value_error("confidences must have the shape (" + std::to_string(file.size()) + ",)");
+        const double* n = normals.data();
+        const double* c = confidences ? confidences->data() : nullptr;
+        py::gil_scoped_release release;
+        CGAL::RRHT::IO::write_LAS_with_normals(file, path, n, c);
+      },
+      py::arg("path"), py::arg("normals").noconvert(), py::arg("confidences").noconvert().none(true) = py::none(),
+      "Writes to `path` every record of this file, byte for byte, with its normal (a C-contiguous float64 array "
+      "(N, 3)) and confidence (None or (N,)) in the extra bytes NormalX, NormalY, NormalZ (and NormalConfidence), "
+      "as rrht_normals writes them, through a temporary file renamed at the end.");
+}
+
 } // namespace
 
 PYBIND11_MODULE(_core, m)
@@ -444,4 +521,5 @@ PYBIND11_MODULE(_core, m)
         "`points` and `normals` are C-contiguous float64 arrays (N, 3); `normals` is oriented in place, row by row.\n"
         "At most one of `direction` (3 numbers), `viewpoint` (3 numbers) and `viewpoints` (a C-contiguous\n"
         "float64 array (N, 3)) is given; with none, the orientation is consistent, with `k` neighbors.");
+  bind_LAS_file(m);
 }

@@ -65,3 +65,24 @@ def cli():
     if not (os.path.isfile(path) and os.access(path, os.X_OK)):
         pytest.skip(f"rrht_normals not found at {path} (build the examples, or set CGAL_RRHT_CLI)")
     return path
+
+
+@pytest.fixture(scope="module")
+def cluster():
+    """A Dask LocalCluster of two worker processes, for cgal_rrht.tiles."""
+    import distributed
+
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None,
+                                  silence_logs=50) as local:
+        yield local
+
+
+@pytest.fixture
+def cli_env():
+    """The environment of a child Python that imports the same cgal_rrht."""
+    import cgal_rrht
+
+    env = dict(os.environ)
+    package = os.path.dirname(os.path.dirname(cgal_rrht.__file__))
+    env["PYTHONPATH"] = package + os.pathsep + env.get("PYTHONPATH", "")
+    return env

@@ -52,6 +52,8 @@ struct LAS_extra_bytes_field
   unsigned int data_type = 0; ///< 1 to 10 (unsigned char to double), 11 to 30 arrays, 0 undocumented bytes
   std::size_t offset = 0;     ///< in the point record
   std::size_t size = 0;       ///< in bytes
+  double scale = 1.;          ///< a value is the number stored times `scale` plus `value_offset`:
+  double value_offset = 0.;   ///< 1 and 0 where the descriptor gives none
 };
 
 /// An uncompressed LAS file. Opening it reads its header and its
@@ -128,16 +130,37 @@ public:
   /// as the specification defines them (Section 2.4).
   void read_points(std::uint64_t first, std::uint64_t count, double* xyz) const
   {
-    const std::uint64_t chunk = (std::max<std::uint64_t>)(1, (1u << 22) / m_record_length);
-    std::vector<unsigned char> records;
-    for(std::uint64_t done = 0; done < count; done += chunk)
-    {
-      const std::uint64_t n = (std::min)(chunk, count - done);
-      records.resize(std::size_t(n * m_record_length));
-      read_records(first + done, n, records.data());
-      for(std::size_t i = 0; i < n; ++i)
-        coordinates(records.data() + i * m_record_length, xyz + 3 * (done + i));
-    }
+    for_each_record(first, count,
+                    [&](const unsigned char* record, std::uint64_t i) { coordinates(record, xyz + 3 * i); });
+  }
+
+  /// Writes to `values` the field `name` of the extra bytes of `count`
+  /// points from the record `first`: the number stored times the scale
+  /// plus the offset that its descriptor gives (Section 4.3).
+  /// \throws LAS_error if no field of one number has this name.
+  void read_field(const std::string& name, std::uint64_t first, std::uint64_t count, double* values) const
+  {
+    const LAS_extra_bytes_field& field = extra_bytes_field(name);
+    for_each_record(first, count, [&](const unsigned char* record, std::uint64_t i) {
+      volatile double scaled = internal::read_value(record + field.offset, field.data_type) * field.scale;
+      values[i] = scaled + field.value_offset; // as the coordinates: never one fused multiply-add
+    });
+  }
+
+  /// The field of one number named `name` of the extra bytes.
+  /// \throws LAS_error if there is none.
+  const LAS_extra_bytes_field& extra_bytes_field(const std::string& name) const
+  {
+    std::string scalars;
+    for(const LAS_extra_bytes_field& field : m_extra_bytes)
+      if(field.data_type >= 1 && field.data_type <= 10)
+      {
+        if(field.name == name)
+          return field;
+        scalars += (scalars.empty() ? "'" : ", '") + field.name + "'";
+      }
+    fail("its extra bytes have no field of one number named '" + name + "' (" +
+         (scalars.empty() ? std::string("they have none") : "they have " + scalars) + ")");
   }
 
   /// The coordinates of one point record, as `read_points()` gives them.
@@ -154,6 +177,23 @@ public:
 
 private:
   static constexpr std::size_t no_record = std::size_t(-1);
+
+  // Calls f(record, i) for the i-th of `count` point records from `first`,
+  // read by chunks of about 4 MiB.
+  template <typename F>
+  void for_each_record(std::uint64_t first, std::uint64_t count, const F& f) const
+  {
+    const std::uint64_t chunk = (std::max<std::uint64_t>)(1, (1u << 22) / m_record_length);
+    std::vector<unsigned char> records;
+    for(std::uint64_t done = 0; done < count; done += chunk)
+    {
+      const std::uint64_t n = (std::min)(chunk, count - done);
+      records.resize(std::size_t(n * m_record_length));
+      read_records(first + done, n, records.data());
+      for(std::size_t i = 0; i < n; ++i)
+        f(records.data() + i * m_record_length, done + i);
+    }
+  }
 
   [[noreturn]] void fail(const std::string& what) const { throw LAS_error(m_path + ": " + what); }
 
@@ -301,6 +341,11 @@ private:
       field.data_type = descriptor[e::data_type];
       field.size = field.data_type == e::undocumented ? descriptor[e::options] : e::size_of(field.data_type);
       field.offset = at;
+      const unsigned int options = field.data_type == e::undocumented ? 0 : descriptor[e::options];
+      if(options & e::scale_bit)
+        field.scale = internal::read_double(descriptor + e::scale);
+      if(options & e::offset_bit)
+        field.value_offset = internal::read_double(descriptor + e::offset);
       if(field.data_type != e::undocumented && field.size == 0)
         fail("its extra bytes '" + field.name + "' have the reserved data type " + std::to_string(field.data_type));
       at += field.size;

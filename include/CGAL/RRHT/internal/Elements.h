@@ -15,11 +15,15 @@ namespace CGAL {
 namespace RRHT {
 namespace internal {
 
+/// Whether `Iterator` is a random-access iterator.
+template <typename Iterator>
+constexpr bool is_random_access =
+  std::is_convertible<typename std::iterator_traits<Iterator>::iterator_category,
+                      std::random_access_iterator_tag>::value;
+
 /// The iterator to the element at a position of the input range: kept in a
 /// table, unless the iterators are random access.
-template <typename Iterator,
-          bool random_access = std::is_convertible<typename std::iterator_traits<Iterator>::iterator_category,
-                                                   std::random_access_iterator_tag>::value>
+template <typename Iterator, bool random_access = is_random_access<Iterator>>
 class Elements
 {
 public:

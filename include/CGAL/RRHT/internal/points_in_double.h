@@ -7,6 +7,7 @@
 #ifndef CGAL_RRHT_INTERNAL_POINTS_IN_DOUBLE_H
 #define CGAL_RRHT_INTERNAL_POINTS_IN_DOUBLE_H
 
+#include <CGAL/RRHT/internal/Elements.h>
 #include <CGAL/RRHT/internal/Neighbor_search.h>
 #include <CGAL/RRHT/internal/Progress.h>
 #include <CGAL/RRHT/internal/for_each_block.h>
@@ -16,8 +17,6 @@
 
 #include <cstddef>
 #include <functional>
-#include <iterator>
-#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -40,8 +39,7 @@ std::vector<Neighbor_search::Point> points_in_double(PointRange& points, PointMa
   typedef typename PointRange::iterator Iterator;
   const Iterator begin = points.begin();
   std::vector<Point> out;
-  if constexpr(std::is_convertible<typename std::iterator_traits<Iterator>::iterator_category,
-                                   std::random_access_iterator_tag>::value)
+  if constexpr(is_random_access<Iterator>)
   {
     // Point's default constructor leaves the coordinates unset: the loop
     // below is the first to touch the vector's memory.

@@ -60,7 +60,11 @@ namespace extra_bytes {
 constexpr std::size_t data_type = 2;
 constexpr std::size_t options = 3;
 constexpr std::size_t name = 4; // char[32]
+constexpr std::size_t scale = 112;       // double, of the first member
+constexpr std::size_t offset = 136;      // double, of the first member
 constexpr std::size_t description = 160; // char[32]
+constexpr unsigned int scale_bit = 1u << 3; // of `options`: the scale is given
+constexpr unsigned int offset_bit = 1u << 4; // the offset is given
 constexpr std::size_t size = 192;
 constexpr unsigned int undocumented = 0; // data_type 0: `options` bytes of unknown meaning
 constexpr unsigned int double_type = 10;
@@ -117,6 +121,35 @@ inline double read_double(const unsigned char* bytes)
   double value;
   std::memcpy(&value, &u, 8);
   return value;
+}
+
+/// A value of the extra bytes' scalar data type 1 to 10 (Section 4.3,
+/// Table 25), as a double: rounded to it for 64-bit integers beyond 2^53.
+inline double read_value(const unsigned char* bytes, unsigned int data_type)
+{
+  auto as_signed = [](auto u, auto s) {
+    std::memcpy(&s, &u, sizeof s);
+    return double(s);
+  };
+  switch(data_type)
+  {
+  case 1: return bytes[0];
+  case 2: return as_signed(bytes[0], std::int8_t());
+  case 3: return read_unsigned<std::uint16_t>(bytes);
+  case 4: return as_signed(read_unsigned<std::uint16_t>(bytes), std::int16_t());
+  case 5: return read_unsigned<std::uint32_t>(bytes);
+  case 6: return as_signed(read_unsigned<std::uint32_t>(bytes), std::int32_t());
+  case 7: return double(read_unsigned<std::uint64_t>(bytes));
+  case 8: return as_signed(read_unsigned<std::uint64_t>(bytes), std::int64_t());
+  case 9:
+  {
+    const std::uint32_t u = read_unsigned<std::uint32_t>(bytes);
+    float value;
+    std::memcpy(&value, &u, 4);
+    return value;
+  }
+  default: return read_double(bytes);
+  }
 }
 
 template <typename Unsigned>
