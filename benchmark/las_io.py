@@ -110,7 +110,7 @@ def picture(las: Path, png: Path, title: str) -> None:
     side.scatter(xyz[:, 0], xyz[:, 1], xyz[:, 2], c=colours, s=0.4, linewidths=0, depthshade=False)
     side.view_init(elev=28, azim=-62)
     side.set_box_aspect(np.ptp(xyz, axis=0) * [1, 1, 2], zoom=1.5)
-    side.set_title("from the south-west, heights doubled")
+    side.set_title("from the south-east, heights doubled")
     side.set_axis_off()
     figure.suptitle(title)
     figure.tight_layout()
