@@ -31,4 +31,10 @@ if [ -n "$leaks" ]; then
   echo "internal names of RRHT in the reference documentation: see above" >&2
   exit 1
 fi
+# The user manual shows pictures of benchmark/results by their path from
+# doc/, which the HTML keeps: the same path from build/doc/html.
+for picture in $(grep -oP '\]\(\.\./\Kbenchmark/results/[^)]+' "$root/doc/user_manual.md"); do
+  mkdir -p "$out/$(dirname "$picture")"
+  cp "$root/$picture" "$out/$picture"
+done
 echo "documentation built without warnings (doxygen $(doxygen --version)): $out/html/index.html"
