@@ -15,8 +15,8 @@
 // a point is on. Some of their normals come out
 // inward there, and Poisson grows a spurious sheet from each such patch.
 // Fins and gaps a couple of neighbor spacings wide get poor normals even
-// without noise, and a few such patches. The user manual's "Known limits"
-// of the orientation says how much.
+// without noise, and a few such patches. The benchmark's README ("What the
+// orientation misses") says how much.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/rrht_estimate_normals.h>
