@@ -13,6 +13,7 @@ Open3D point cloud.
 
 from __future__ import annotations
 
+import warnings
 from typing import Any, Dict, Literal, Optional, Tuple, Union, overload
 
 import numpy as np
@@ -56,14 +57,16 @@ def estimate_normals(
     adaptive: Optional[bool] = ...,
     refit: bool = ...,
     ids: Optional[npt.ArrayLike] = ...,
-    neighbors: Optional[npt.ArrayLike] = ...,
-    neighbor_ids: Optional[npt.ArrayLike] = ...,
+    halo: Optional[npt.ArrayLike] = ...,
+    halo_ids: Optional[npt.ArrayLike] = ...,
     threads: Optional[int] = ...,
     progress: bool = ...,
     orient: Union[None, str, npt.ArrayLike] = ...,
     viewpoint: Optional[npt.ArrayLike] = ...,
     return_confidence: Literal[False] = ...,
     return_support: Literal[False] = ...,
+    neighbors: Optional[npt.ArrayLike] = ...,
+    neighbor_ids: Optional[npt.ArrayLike] = ...,
 ) -> npt.NDArray[np.float64]: ...
 
 
@@ -87,14 +90,16 @@ def estimate_normals(
     adaptive: Optional[bool] = ...,
     refit: bool = ...,
     ids: Optional[npt.ArrayLike] = ...,
-    neighbors: Optional[npt.ArrayLike] = ...,
-    neighbor_ids: Optional[npt.ArrayLike] = ...,
+    halo: Optional[npt.ArrayLike] = ...,
+    halo_ids: Optional[npt.ArrayLike] = ...,
     threads: Optional[int] = ...,
     progress: bool = ...,
     orient: Union[None, str, npt.ArrayLike] = ...,
     viewpoint: Optional[npt.ArrayLike] = ...,
     return_confidence: bool = ...,
     return_support: bool = ...,
+    neighbors: Optional[npt.ArrayLike] = ...,
+    neighbor_ids: Optional[npt.ArrayLike] = ...,
 ) -> Union[npt.NDArray[np.float64], Tuple[npt.NDArray[np.float64], ...]]: ...
 
 
@@ -117,14 +122,16 @@ def estimate_normals(
     adaptive: Optional[bool] = None,
     refit: bool = False,
     ids: Optional[npt.ArrayLike] = None,
-    neighbors: Optional[npt.ArrayLike] = None,
-    neighbor_ids: Optional[npt.ArrayLike] = None,
+    halo: Optional[npt.ArrayLike] = None,
+    halo_ids: Optional[npt.ArrayLike] = None,
     threads: Optional[int] = None,
     progress: bool = False,
     orient: Union[None, str, npt.ArrayLike] = None,
     viewpoint: Optional[npt.ArrayLike] = None,
     return_confidence: bool = False,
     return_support: bool = False,
+    neighbors: Optional[npt.ArrayLike] = None,
+    neighbor_ids: Optional[npt.ArrayLike] = None,
 ) -> Union[npt.NDArray[np.float64], Tuple[npt.NDArray[np.float64], ...]]:
     """Estimates the normals of a point cloud, keeping sharp features.
 
@@ -226,23 +233,6 @@ def estimate_normals(
         two parallel planes where the neighborhood is the two sides of a
         thin part, but not near sharp features. The noise deviation is
         estimated from the point's neighbors. Costs a second pass.
-    ids : array_like of int, shape (N,), optional
-        A stable id for each point, 0 to 2**64 - 1, distinct (the named
-        parameter ``point_id_map`` of the C++ function); default: the row.
-        It keys the point's random stream and orders its neighbors at the
-        same distance. With the rows of a whole cloud as ids, a part of it
-        gives each point whose support (``return_support``) it holds the
-        same normal, bit for bit, as the whole cloud:
-        ``cgal_rrht.tiles`` is built on it.
-    neighbors : array_like, shape (M, 3), optional
-        Points that are only neighbors of ``points`` (the named parameter
-        ``neighbor_only_map`` of the C++ function): they get no normal and
-        cost no estimation (with ``refit``, only its first pass), as the
-        halo of a tile. The arrays returned have a row per point of
-        ``points`` only.
-    neighbor_ids : array_like of int, shape (M,), optional
-        The ids of ``neighbors``, needed with ``ids``; without ``ids``, the
-        rows that follow those of ``points``, N to N + M - 1.
     threads : int, optional
         The number of threads for this call, 1 to 1024; default: all cores.
     progress : bool, default False
@@ -253,7 +243,7 @@ def estimate_normals(
         the same as without this parameter, bit for bit. ``"consistent"``:
         consistently from the points alone, out of closed surfaces, with 18
         neighbors, as ``rrht_normals --orient`` (call
-        :func:`orient_normals` for another number); not with ``neighbors``,
+        :func:`orient_normals` for another number); not with ``halo``,
         since a part of a cloud cannot be oriented consistently with the
         rest on its own. ``"up"`` or a direction (3 numbers, finite, not
         null): each normal is flipped where it points against the direction.
@@ -266,10 +256,6 @@ def estimate_normals(
         named parameter ``confidence_map`` of the C++ function). With the
         default setting it takes extra time: the Hough transform then also
         votes where the quadric is kept.
-    return_support : bool, default False
-        Also return the support radius of each normal: the radius of the
-        ball around the point that holds every point its normal depends on
-        (the named parameter ``support_radius_map`` of the C++ function).
 
     Returns
     -------
@@ -300,21 +286,51 @@ def estimate_normals(
         in this order, as those of ``numpy.unique``: normals, then
         confidence and support if asked for.
 
+    Other Parameters
+    ----------------
+    These are for parts of a cloud, as ``cgal_rrht.tiles`` processes it.
+    ids : array_like of int, shape (N,), optional
+        A stable id for each point, 0 to 2**64 - 1, distinct (the named
+        parameter ``point_id_map`` of the C++ function); default: the row.
+        It keys the point's random stream and orders its neighbors at the
+        same distance. With the rows of a whole cloud as ids, a part of it
+        gives each point whose support (``return_support``) it holds the
+        same normal, bit for bit, as the whole cloud:
+        ``cgal_rrht.tiles`` is built on it.
+    halo : array_like, shape (M, 3), optional
+        Points that are only neighbors of ``points`` (the named parameter
+        ``neighbor_only_map`` of the C++ function), as the halo of a tile:
+        they get no normal and cost no estimation (with ``refit``, only its
+        first pass). The arrays returned have a row per point of
+        ``points`` only.
+    halo_ids : array_like of int, shape (M,), optional
+        The ids of ``halo``, needed with ``ids``; without ``ids``, the
+        rows that follow those of ``points``, N to N + M - 1.
+    return_support : bool, default False
+        Also return the support radius of each normal: the radius of the
+        ball around the point that holds every point its normal depends on
+        (the named parameter ``support_radius_map`` of the C++ function).
+    neighbors : array_like, optional
+        The deprecated name of ``halo`` (``--neighbors`` is ``k`` on the
+        command line), kept for one release with a ``DeprecationWarning``.
+    neighbor_ids : array_like of int, optional
+        The deprecated name of ``halo_ids``, kept as ``neighbors``.
+
     Raises
     ------
     TypeError
-        If ``points`` or ``neighbors`` is an array of another dtype than
-        float64 or float32, or ``ids`` or ``neighbor_ids`` is not an array of
+        If ``points`` or ``halo`` is an array of another dtype than
+        float64 or float32, or ``ids`` or ``halo_ids`` is not an array of
         integers.
     ValueError
-        If ``points`` is not of shape (N, 3) (``neighbors`` (M, 3)), ``ids``
-        not of shape (N,) (``neighbor_ids`` (M,)) or negative, if only one
-        of ``ids`` and ``neighbor_ids`` is given with ``neighbors``, if a
+        If ``points`` is not of shape (N, 3) (``halo`` (M, 3)), ``ids``
+        not of shape (N,) (``halo_ids`` (M,)) or negative, if only one
+        of ``ids`` and ``halo_ids`` is given with ``halo``, if a
         parameter is out of its
         range (with the message of ``CGAL::rrht_estimate_normals()``), if
         ``setting``, ``sampling`` or ``aggregation`` is an unknown name, or if ``orient``
         or ``viewpoint`` is wrong (as in :func:`orient_normals`), both are
-        given, or ``orient`` is ``"consistent"`` with ``neighbors``. All
+        given, or ``orient`` is ``"consistent"`` with ``halo``. All
         of this is checked before the estimation starts.
     KeyboardInterrupt
         On Ctrl-C, which stops the estimation within a fraction of a second
@@ -337,8 +353,10 @@ def estimate_normals(
     >>> bool(((confidence > 0) & (confidence <= 1)).all())
     True
     """
+    halo, halo_ids = _renamed(("neighbors", neighbors), ("halo", halo)), \
+        _renamed(("neighbor_ids", neighbor_ids), ("halo_ids", halo_ids))
     array = _points(points, "points", "N")
-    extra = None if neighbors is None else _points(neighbors, "neighbors", "M")
+    extra = None if halo is None else _points(halo, "halo", "M")
     fast = _name(setting, SETTINGS, "setting") == "paper_fast"
     arguments = dict(
         k=k,
@@ -360,12 +378,12 @@ def estimate_normals(
         return_support=bool(return_support),
     )
     id_array = None if ids is None else _ids(ids, len(array), "ids")
-    if extra is not None and (ids is None) != (neighbor_ids is None):
-        raise ValueError("give both ids and neighbor_ids, or neither")
-    if extra is None and neighbor_ids is not None:
-        raise ValueError("neighbor_ids without neighbors")
+    if extra is not None and (ids is None) != (halo_ids is None):
+        raise ValueError("give both ids and halo_ids, or neither")
+    if extra is None and halo_ids is not None:
+        raise ValueError("halo_ids without halo")
     if extra is not None and id_array is not None:
-        id_array = np.concatenate([id_array, _ids(neighbor_ids, len(extra), "neighbor_ids")])
+        id_array = np.concatenate([id_array, _ids(halo_ids, len(extra), "halo_ids")])
     # Checked now, not after a long estimation.
     orientation = _estimation_orientation(orient, viewpoint, len(array), arguments["threads"], extra is not None)
     if not progress:
@@ -543,8 +561,19 @@ def _orientation(direction: object, viewpoint: object, count: int, name: str = "
     return arguments
 
 
+def _renamed(old: Tuple[str, Any], new: Tuple[str, Any]) -> Any:
+    """The value of the keyword ``new``, or of its deprecated name ``old``, with a DeprecationWarning."""
+    if old[1] is None:
+        return new[1]
+    if new[1] is not None:
+        raise TypeError(f"give {new[0]}= only: {old[0]}= is its deprecated name")
+    warnings.warn(f"{old[0]}= is deprecated: it is now {new[0]}= ({old[0]} is k on the command line)",
+                  DeprecationWarning, stacklevel=3)
+    return old[1]
+
+
 def _estimation_orientation(orient: object, viewpoint: object, count: int, threads: Optional[int],
-                            with_neighbors: bool) -> Optional[Dict[str, Any]]:
+                            with_halo: bool) -> Optional[Dict[str, Any]]:
     """The arguments of ``_core.orient_normals()`` for ``estimate_normals(orient=..., viewpoint=...)``, or None.
 
     Checked in full: ``_core.orient_normals()`` is called on no point, so
@@ -555,8 +584,8 @@ def _estimation_orientation(orient: object, viewpoint: object, count: int, threa
     if orient is not None and viewpoint is not None:
         raise ValueError("give orient or viewpoint, not both: viewpoint alone orients the normals towards it")
     if isinstance(orient, str) and orient == "consistent":
-        if with_neighbors:
-            raise ValueError("orient='consistent' cannot be used with neighbors: a part of a cloud would be oriented "
+        if with_halo:
+            raise ValueError("orient='consistent' cannot be used with a halo: a part of a cloud would be oriented "
                              "consistently on its own, not with the rest; orient towards a direction or a viewpoint, "
                              "or orient the whole cloud")
         orientation: Dict[str, Any] = dict(direction=None, viewpoint=None, viewpoints=None)

@@ -162,10 +162,10 @@ def scanner_positions(source: PointFile, fields: Sequence[str], start: int = 0,
     return np.stack([source.field(name, start, stop) for name in fields], axis=1)
 
 
-def _estimate(points: np.ndarray, ids: np.ndarray, neighbors: np.ndarray, neighbor_ids: np.ndarray,
+def _estimate(points: np.ndarray, ids: np.ndarray, halo: np.ndarray, halo_ids: np.ndarray,
               options: Dict[str, Any]):
-    """Normals, confidences (or None) and supports of ``points``, with ``neighbors`` as neighbors only."""
-    normals, *rest = estimate_normals(points, ids=ids, neighbors=neighbors, neighbor_ids=neighbor_ids,
+    """Normals, confidences (or None) and supports of ``points``, with ``halo`` as neighbors only."""
+    normals, *rest = estimate_normals(points, ids=ids, halo=halo, halo_ids=halo_ids,
                                       return_support=True, **options)
     return normals, rest[0] if options.get("return_confidence") else None, rest[-1]
 

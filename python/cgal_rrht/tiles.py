@@ -163,7 +163,7 @@ def run(input: "os.PathLike[str] | str", output: "os.PathLike[str] | str", *, sc
         file that is not LAS, and what ``estimate_normals()`` refuses in
         ``orient`` and ``viewpoint``.
     """
-    for name in ("ids", "neighbors", "neighbor_ids", "return_support", "progress"):
+    for name in ("ids", "halo", "halo_ids", "neighbors", "neighbor_ids", "return_support", "progress"):
         if name in estimator:
             raise TypeError(f"run() sets {name} itself: each task passes its tile's ids and halo")
     if isinstance(orient, str) and orient == "consistent":
@@ -177,7 +177,7 @@ def run(input: "os.PathLike[str] | str", output: "os.PathLike[str] | str", *, sc
         raise ValueError(f"viewpoint must be one point, 3 numbers, or, for each point's scanner position, the names "
                          f"of 3 extra-bytes fields of LAS tiles, not {given}")
     # The checks of estimate_normals(), made now rather than by each task.
-    _estimation_orientation(orient, np.zeros(3) if fields else viewpoint, 0, threads, with_neighbors=True)
+    _estimation_orientation(orient, np.zeros(3) if fields else viewpoint, 0, threads, with_halo=True)
     input, output = Path(input), Path(output)
     if not input.exists():
         raise TileError(f"{input}: no such file or folder")

@@ -329,31 +329,40 @@ def test_bad_ids(ids, error, message):
 
 
 @pytest.mark.parametrize("refit", [False, True])
-def test_neighbors_are_only_neighbors(fandisk, refit):
+def test_a_halo_is_only_neighbors(fandisk, refit):
     points = fandisk[0]
     whole, support = cgal_rrht.estimate_normals(points, k=30, refit=refit, return_support=True)
-    normals, own_support = cgal_rrht.estimate_normals(points[:5000], k=30, refit=refit, neighbors=points[5000:],
+    normals, own_support = cgal_rrht.estimate_normals(points[:5000], k=30, refit=refit, halo=points[5000:],
                                                       return_support=True)
     assert normals.shape == (5000, 3) and own_support.shape == (5000,)
     assert np.array_equal(normals, whole[:5000]) and np.array_equal(own_support, support[:5000])
     rows = np.arange(len(points))[::-1]  # the same with ids, the points in another order
     assert np.array_equal(
         cgal_rrht.estimate_normals(points[rows][:7000], k=30, refit=refit, ids=rows[:7000],
-                                   neighbors=points[rows][7000:], neighbor_ids=rows[7000:]),
+                                   halo=points[rows][7000:], halo_ids=rows[7000:]),
         whole[rows[:7000]])
+    if not refit:  # the deprecated names still work, with a warning
+        with pytest.warns(DeprecationWarning, match=r"neighbors= is deprecated: it is now halo="):
+            assert np.array_equal(cgal_rrht.estimate_normals(points[:5000], k=30, neighbors=points[5000:]),
+                                  whole[:5000])
+        with pytest.warns(DeprecationWarning, match=r"neighbor_ids= is deprecated: it is now halo_ids="):
+            cgal_rrht.estimate_normals(points[:10], k=30, ids=np.arange(10), halo=points[10:20],
+                                       neighbor_ids=np.arange(10, 20))
 
 
 @pytest.mark.parametrize(
     "arguments, error, message",
     [
-        (dict(neighbors=np.zeros((4, 2))), ValueError, r"neighbors must have the shape \(M, 3\), not \(4, 2\)"),
-        (dict(neighbors=np.zeros((4, 3), dtype=int)), TypeError, "neighbors must be float64 or float32, not int64"),
-        (dict(neighbors=np.zeros((4, 3)), ids=np.arange(5)), ValueError, "give both ids and neighbor_ids, or neither"),
-        (dict(neighbor_ids=np.arange(4)), ValueError, "neighbor_ids without neighbors"),
-        (dict(neighbors=np.zeros((4, 3)), ids=np.arange(5), neighbor_ids=np.arange(3)), ValueError,
-         r"neighbor_ids must have the shape \(4,\), one per point, not \(3,\)"),
+        (dict(halo=np.zeros((4, 2))), ValueError, r"halo must have the shape \(M, 3\), not \(4, 2\)"),
+        (dict(halo=np.zeros((4, 3), dtype=int)), TypeError, "halo must be float64 or float32, not int64"),
+        (dict(halo=np.zeros((4, 3)), ids=np.arange(5)), ValueError, "give both ids and halo_ids, or neither"),
+        (dict(halo_ids=np.arange(4)), ValueError, "halo_ids without halo"),
+        (dict(halo=np.zeros((4, 3)), ids=np.arange(5), halo_ids=np.arange(3)), ValueError,
+         r"halo_ids must have the shape \(4,\), one per point, not \(3,\)"),
+        (dict(halo=np.zeros((4, 3)), neighbors=np.zeros((4, 3))), TypeError,
+         "give halo= only: neighbors= is its deprecated name"),
     ],
 )
-def test_bad_neighbors(arguments, error, message):
+def test_bad_halo(arguments, error, message):
     with pytest.raises(error, match=message):
         cgal_rrht.estimate_normals(noisy_cube(5)[0], k=3, **arguments)

@@ -345,7 +345,7 @@ def test_k_is_not_used_towards_a_direction_or_a_viewpoint():
     "arguments, message",
     [
         (dict(orient="up", viewpoint=(0, 0, 5)), "give orient or viewpoint, not both"),
-        (dict(orient="consistent", neighbors=np.zeros((4, 3))), "orient='consistent' cannot be used with neighbors"),
+        (dict(orient="consistent", halo=np.zeros((4, 3))), "orient='consistent' cannot be used with a halo"),
         (dict(orient="outward"), "unknown orient 'outward': use 'consistent', 'up' or three numbers"),
         (dict(orient=(1, 2)), r"orient must be 'consistent', 'up' or three numbers, not an array of shape \(2,\)"),
         (dict(orient=(0, 0, 0)), "direction must be finite and not null"),
