@@ -126,14 +126,25 @@ namespace CGAL {
                       of the iterator of `PointRange` and whose value type is `geom_traits::Vector_3`}
      \cgalParamNEnd
 
+     \cgalParamNBegin{geom_traits}
+       \cgalParamDescription{an instance of a geometric traits class}
+       \cgalParamType{a model of `Kernel`}
+       \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
+     \cgalParamNEnd
+
      \cgalParamNBegin{neighbor_radius}
-       \cgalParamDescription{the spherical neighborhood radius}
-       \cgalParamType{floating scalar value}
-       \cgalParamDefault{`0` (no limit)}
-       \cgalParamExtra{If provided, the neighborhood of a point is the set of points within this distance,
-                       the point included. If `k` is not 0 and the ball holds more than `k` other points,
-                       only the `k` nearest are kept, so that no part of the ball is favored. A ball with
-                       fewer than 3 points is replaced by the point and its `k` nearest neighbors (3 if `k` is 0).}
+       \cgalParamDescription{r, the radius of a spherical neighborhood: the points within it, the point included}
+       \cgalParamType{floating scalar value, positive and finite, or 0}
+       \cgalParamDefault{`0` (the `k` nearest neighbors)}
+       \cgalParamExtra{A ball with more than `k` other points keeps the `k` nearest (`k` = 0: no cap); a ball of
+                       fewer than 3 points is replaced by the point and its `k` (at least 3) nearest neighbors.}
+     \cgalParamNEnd
+
+     \cgalParamNBegin{random_seed}
+       \cgalParamDescription{the seed of the random draws; each point draws from its own stream, keyed by the seed
+                             and its id (`point_id_map`)}
+       \cgalParamType{unsigned int}
+       \cgalParamDefault{`0`}
      \cgalParamNEnd
 
      \cgalParamNBegin{callback}
@@ -141,44 +152,65 @@ namespace CGAL {
                              while it's running and to interrupt it if needed}
        \cgalParamType{an instance of `std::function<bool(double)>`.}
        \cgalParamDefault{unused}
-       \cgalParamExtra{It is called after every block of 64 points with the current advancement (between 0. and
-                       1.), and with 1. at the end. If it returns `true`, then the
-                       algorithm continues its execution normally; if it returns
-                       `false`, the algorithm is stopped and the remaining normals are left unchanged. With
-                       `least_squares_first` (the default), normals are written in the last of three passes, the last
-                       third of the advancement: stopped before, it leaves every normal unchanged. Without it, with
-                       `refit`, whose second pass is the second half of the advancement, the points that pass did not
-                       reach keep their RRHT normal.}
-       \cgalParamExtra{The callback will be copied and therefore needs to be lightweight.}
-       \cgalParamExtra{When `CGAL::Parallel_tag` is used, the `callback` is called from the worker threads,
-                       one at a time, and shouldn't access or modify the variables that are parameters of the algorithm.}
+       \cgalParamExtra{It is called after every block of 64 points with the advancement (from 0. to 1.), and
+                       with 1. at the end; returning `false` stops the algorithm and leaves the remaining
+                       normals unchanged (with `least_squares_first`, every normal if stopped before the last
+                       third; with `refit` alone, the points its second pass did not reach keep their RRHT normal).
+                       It is copied, and with `CGAL::Parallel_tag` called from the worker threads, one at a time.}
      \cgalParamNEnd
 
-     \cgalParamNBegin{random_seed}
-       \cgalParamDescription{the seed of the random draws}
-       \cgalParamType{unsigned int}
-       \cgalParamDefault{`0`}
-       \cgalParamExtra{Each point draws from its own random stream, derived from the seed and its id (see `point_id_map`).}
+     \cgalParamNBegin{confidence_map}
+       \cgalParamDescription{a property map receiving the confidence of each normal, from 0 to 1 (beyond the paper):
+                             the share of the planes drawn at the point that voted for the returned normal}
+       \cgalParamType{a model of `WritablePropertyMap` whose key type is the value type
+                      of the iterator of `PointRange` and whose value type is a floating-point type}
+       \cgalParamDefault{unused}
+       \cgalParamExtra{High where one plane holds the neighborhood, low near sharp features and where the normal
+                       is wrong; noise lowers it evenly, so compare values within a cloud and a setting. 0 for a null
+                       normal. With `least_squares_first`, where a normal is kept without a vote, 50 triples are
+                       drawn to measure it, which takes time: pass a map only where the confidences are read.}
+     \cgalParamNEnd
+   \cgalNamedParamsEnd
+
+   \cgalNamedParamsBegin{The setting: what runs where (beyond the paper; the presets
+                         CGAL::RRHT::parameters::paper_precise() and paper_fast() turn the first two off)}
+     \cgalParamNBegin{least_squares_first}
+       \cgalParamDescription{keep the normal of jet fitting's quadric where the neighborhood is one smooth sheet
+                             within the noise (or one side of a thin part), and run the Hough transform only at the
+                             other points}
+       \cgalParamType{bool}
+       \cgalParamDefault{`true`}
      \cgalParamNEnd
 
-     \cgalParamNBegin{geom_traits}
-       \cgalParamDescription{an instance of a geometric traits class}
-       \cgalParamType{a model of `Kernel`}
-       \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
+     \cgalParamNBegin{adaptive}
+       \cgalParamDescription{run the Hough transform with the paper's fast setting first, and again with
+                             `number_of_planes` and `number_of_rotations` where the confidence of that normal is low
+                             (with spatial sampling where it is lowest, as along sharp features), after the future
+                             work of the paper's Section 7}
+       \cgalParamType{bool}
+       \cgalParamDefault{`true`}
+       \cgalParamExtra{Each normal is one that a plain setting gives at the point; the confidence written is that
+                       of the normal kept.}
      \cgalParamNEnd
 
+     \cgalParamNBegin{refit}
+       \cgalParamDescription{refit each normal of the Hough transform by least squares where its neighborhood is one
+                             sheet within the noise (a quadric) or the two sides of a thin part (two parallel planes);
+                             elsewhere, as near sharp features, it stays}
+       \cgalParamType{bool}
+       \cgalParamDefault{`false`}
+       \cgalParamExtra{A second pass, about twice the time; the confidence written is still that of the RRHT normal.}
+     \cgalParamNEnd
+   \cgalNamedParamsEnd
+
+   \cgalNamedParamsBegin{The paper's tuning knobs (under `adaptive` (part of the default) `number_of_planes`
+                         and `number_of_rotations` set its second stage; of `sampling` only `UNIF` changes
+                         anything there)}
      \cgalParamNBegin{number_of_planes}
        \cgalParamDescription{T_R, the largest number of triples drawn per rotated accumulator (paper, eq. 7)}
        \cgalParamType{an integer from 1 to 100 000 000}
        \cgalParamDefault{the Hoeffding bound of eq. 7 with alpha = 0.95, delta = 0.08 and the number M of bins
                          of the accumulator, `CGAL::RRHT::hoeffding_number_of_planes(M)`: 691 for 15 slices}
-       \cgalParamExtra{With `CGAL::RRHT::Sampling::POINTS`, a neighborhood with fewer triples has each of them drawn once.}
-     \cgalParamNEnd
-
-     \cgalParamNBegin{accumulator_slices}
-       \cgalParamDescription{n_phi, the number of slices of the sphere in the accumulator (paper, Section 3)}
-       \cgalParamType{an integer from 1 to 1000}
-       \cgalParamDefault{`15` (M = 172 bins on the half sphere)}
      \cgalParamNEnd
 
      \cgalParamNBegin{number_of_rotations}
@@ -187,22 +219,25 @@ namespace CGAL {
        \cgalParamDefault{`5`}
      \cgalParamNEnd
 
+     \cgalParamNBegin{accumulator_slices}
+       \cgalParamDescription{n_phi, the number of slices of the sphere in the accumulator (paper, Section 3)}
+       \cgalParamType{an integer from 1 to 1000}
+       \cgalParamDefault{`15` (M = 172 bins on the half sphere)}
+     \cgalParamNEnd
+
      \cgalParamNBegin{use_confidence_interval}
-       \cgalParamDescription{whether to stop drawing as soon as the 95% confidence intervals of the two most
-                             voted bins are disjoint (paper, eq. 10)}
+       \cgalParamDescription{stop drawing as soon as the 95% confidence intervals of the two most voted bins are
+                             disjoint (paper, eq. 10)}
        \cgalParamType{bool}
        \cgalParamDefault{`true`}
      \cgalParamNEnd
 
      \cgalParamNBegin{sampling}
-       \cgalParamDescription{how triples of points are drawn (paper, Section 5)}
+       \cgalParamDescription{how triples are drawn (paper, Section 5): uniformly among the neighbors, or spatially
+                             uniformly in the neighborhood ball, which resists density variations at some cost in time}
        \cgalParamType{`CGAL::RRHT::Sampling`: `POINTS` (RRHT_Points), `CUBES` (RRHT_Cubes) or `UNIF` (RRHT_Unif)}
-       \cgalParamDefault{`CGAL::RRHT::Sampling::POINTS`}
-       \cgalParamExtra{`CUBES` and `UNIF` draw points spatially uniformly in the neighborhood ball: the ball of
-                       `neighbor_radius`, or, for a k-neighborhood or a capped ball, the ball through the farthest
-                       neighbor kept. They resist density variations (anisotropy) at some cost in time. With
-                       `adaptive` (the default), which draws spatially only along sharp features, `UNIF` makes it
-                       draw with `UNIF` there instead of `CUBES`, and the other values change nothing.}
+       \cgalParamDefault{`CGAL::RRHT::Sampling::POINTS`; with `adaptive`, `CUBES` where it draws spatially,
+                         `UNIF` if `sampling` is `UNIF`}
      \cgalParamNEnd
 
      \cgalParamNBegin{presampling_factor}
@@ -222,162 +257,37 @@ namespace CGAL {
        \cgalParamType{floating scalar value, from 0 to 180}
        \cgalParamDefault{`45`}
      \cgalParamNEnd
+   \cgalNamedParamsEnd
 
-     \cgalParamNBegin{confidence_map}
-       \cgalParamDescription{a property map receiving the confidence of each normal, from 0 to 1 (beyond the paper)}
-       \cgalParamType{a model of `WritablePropertyMap` whose key type is the value type
-                      of the iterator of `PointRange` and whose value type is a floating-point type}
-       \cgalParamDefault{unused}
-       \cgalParamExtra{The confidence is the share of all the planes drawn at the point, over the
-                       `number_of_rotations` accumulators, that voted for a most voted bin within
-                       `cluster_angle` of the returned normal. It is high where one plane holds the
-                       neighborhood and its triples agree, and drops near sharp features, where triples
-                       across them scatter their votes and the rotations disagree: a low value flags a
-                       normal to distrust (for errors above 10 degrees on noisy CAD shapes, the area under
-                       the ROC curve of 1 - confidence is 0.94 to 0.99, see the user manual). Noise, finer
-                       accumulators and smaller neighborhoods spread the votes and lower it evenly: compare
-                       values within a cloud and a setting (on a cube of 100k points with 0.2% noise, with
-                       `paper_precise()`, the median is 0.16 on the faces and 0.04 within 1% of the diagonal of
-                       an edge). A null normal has confidence 0. With the paper's settings, writing it costs no
-                       measurable time; with `least_squares_first` (part of the default), where a normal is kept without a vote, the
-                       share of 50 of its triples whose planes lie within twice a bin's solid angle of it measures
-                       it (higher values than a vote's, ranked alike), which takes some time (see the user
-                       manual): pass a confidence map only where the confidences are read.}
-     \cgalParamNEnd
-
-     \cgalParamNBegin{adaptive}
-       \cgalParamDescription{whether to spend the draws where the normals are uncertain (beyond the paper, after the
-                             future work of its Section 7)}
-       \cgalParamType{bool}
-       \cgalParamDefault{`true` (`false` in `CGAL::RRHT::parameters::paper_precise()` and `paper_fast()`)}
-       \cgalParamExtra{With `least_squares_first`, this is the Hough transform run where the least-squares
-                       fit is not kept. Each point is first estimated with the paper's fast setting (at most 300 planes, 2
-                       rotations, `CGAL::RRHT::Sampling::POINTS`). Where the confidence of that normal (see
-                       `confidence_map`) is below 0.09, it is estimated again with `number_of_planes` and
-                       `number_of_rotations` (the precise setting by default), with `POINTS`; where the
-                       confidence is below 0.045, as along sharp features, with `CUBES` (`UNIF` if `sampling` is
-                       `UNIF`) instead, unless that normal's confidence is below the first one's and that with
-                       `POINTS` has a higher confidence (spatial drawing resists the uneven densities of the two sides
-                       of a sharp feature, but draws mostly outliers where they fill the ball).
-                       Each normal of the Hough transform is thus the normal that one of these plain settings gives
-                       at the point (with `least_squares_first`, a neighbor's plane may be taken instead), and the
-                       result stays the same for any number of threads. The confidence written is that of the
-                       normal kept. `sampling` is otherwise ignored. The thresholds are tuned on the benchmark's
-                       noisy CAD shapes (0.2% noise, `k` = 100), where it has fewer normals off by more than 10
-                       degrees than the precise setting at less than half its time (see the user manual); on
-                       noisier clouds, or with fewer neighbors, more points are estimated twice.}
-     \cgalParamNEnd
-
-     \cgalParamNBegin{refit}
-       \cgalParamDescription{whether to refit each normal by least squares where its neighborhood is one smooth sheet,
-                             or the two parallel sides of a thin part (beyond the paper)}
-       \cgalParamType{bool}
-       \cgalParamDefault{`false`}
-       \cgalParamExtra{After the Hough transform, a second pass fits, by least squares, a quadric height field over the
-                       plane of the RRHT normal (as jet fitting does) to the neighbors within 2.5 noise deviations of
-                       it, three times. The noise deviation at a point is the first quartile of the deviations
-                       estimated at its neighbors (each from the nearest quarter of its residuals), at least 0.4% of
-                       the neighborhood's radius. Where the neighborhood is two parallel sheets (its heights split
-                       in two by 1D 2-means, one plane with one more offset for the other sheet fitted to them three
-                       times) at least 4 deviations of their residuals apart, the smaller holding at least 25% of the
-                       neighbors and lying under the point, each sheet within 10 degrees of parallel, with at most 5%
-                       of the neighbors outside the band and the point within it, their normal is kept. Else, where
-                       at most 5% of the neighbors lie outside the band of the quadric and the point lies within
-                       it, the quadric's normal is kept, or, where every neighbor lies within 3 noise deviations of
-                       the quadric, that of a quadric fitted to all of them in the frame of their principal axes (as
-                       jet fitting does). The normal may turn by at most 20 degrees. Elsewhere, as near sharp
-                       features, the RRHT normal stays.
-                       This removes the accumulator's quantization and the scatter of the triples on smooth surfaces
-                       and on thin parts, without rounding edges. On the benchmark's clouds (100k points, 0.2% noise)
-                       it took 1.9 to 2.2 times as long as without, and lost no accuracy on those with sharp edges
-                       (figures in the user manual). The confidence written is still that of the RRHT normal. The
-                       result stays the same for any number of threads.}
-     \cgalParamNEnd
-
-     \cgalParamNBegin{least_squares_first}
-       \cgalParamDescription{whether to keep the normal of jet fitting's quadric where the neighborhood is one smooth sheet
-                             within the noise, and run the Hough transform only at the other points (beyond the paper)}
-       \cgalParamType{bool}
-       \cgalParamDefault{`true` (`false` in `CGAL::RRHT::parameters::paper_precise()` and `paper_fast()`)}
-       \cgalParamExtra{A first pass fits, by least squares, a quadric height field to all the n neighbors of each point
-                       in the frame of their principal axes, as `CGAL::jet_estimate_normals()` does, and estimates the
-                       noise deviation of its residuals from their nearest quarter, relative to the neighborhood's
-                       radius r; where that deviation is more than 1.5 times the residuals' root mean square (bimodal
-                       residuals: the two sides of a thin part well inside the neighborhood), the quadric of the point's
-                       own side (found by the split below) replaces it, and so it does, split along the principal normal
-                       of the nearest quarter of the neighbors, where that normal is more than 10 degrees from the
-                       quadric's in a neighborhood of at least 40 points (the other side tilting the principal axes). The quadric is one smooth sheet where the mean
-                       square of its residuals exceeds the noise variance of the scan around the point by at most
-                       (0.03 r)^2: that variance is the square of the first quartile of the deviations estimated at its
-                       neighbors, times 1 + 65.5 / (n - 6), as both estimates scatter more with fewer neighbors (the
-                       residuals are counted with their n - 6 degrees of freedom). Where it is not, in a neighborhood of
-                       at least 40 points whose offsets from the quadric's tangent plane split in two groups whose means
-                       are more than 3.5 times the larger spread within them apart (the two sides of a thin part), the
-                       quadric of the point's own group replaces it if that one passes the test. Its normal is kept
-                       where it is one sheet and at most 15% of the nearest 60% of its neighbors are not: near a sharp
-                       feature, a neighborhood that only grazes it passes the test but its normal turns. Where a
-                       neighbor failed the test and the kept normal is more than 5 degrees from that of the Hough
-                       transform's first stage (the cheap stage with `adaptive`), the quadric of the nearest 30% of the
-                       neighbors (if they are at least 24) picks the nearer of the two: next to a sharp feature, the
-                       Hough transform keeps to the point's side; on a fillet narrower than the neighborhood, it takes a
-                       flat side. At the other points, as along sharp features, the normal is that of the Hough
-                       transform with the other parameters (`adaptive` included), refitted with `refit` (with that first
-                       quartile as the noise deviation). With `adaptive`, the normals of the kept quadrics of the
-                       point's neighbors are planes through the point first, each scored by its neighbors within a band
-                       of 3 noise deviations (at least 1% of r); the best one, refitted to the neighbors in its band,
-                       is taken where they score at least 85% of the neighborhood, or where the cheap stage's normal is
-                       within 5 degrees of it and the quadric's residuals have a root mean square of at least 0.1 r
-                       (across a crease), and the adaptive setting goes on elsewhere. The confidence written for a
-                       quadric's or such a plane's normal is measured on
-                       the votes of the Hough transform's first stage at the point (the cheap stage with `adaptive`)
-                       where that stage ran, and elsewhere, if a `confidence_map` is given, on 50 triples (the share
-                       whose planes lie within twice a bin's solid angle of the normal). The passes are streamed along a Hilbert curve of the points: each
-                       point's neighbors are kept between its passes where these are close along the curve, and
-                       found again elsewhere. The result stays the same for any number of threads.}
-     \cgalParamNEnd
-
+   \cgalNamedParamsBegin{For parts of a cloud (beyond the paper; `cgal_rrht.tiles` processes a cloud tile by tile
+                         with them)}
      \cgalParamNBegin{point_id_map}
-       \cgalParamDescription{a property map associating a stable id to each point of `points` (beyond the paper)}
+       \cgalParamDescription{a property map associating a stable id to each point: it keys the point's random stream
+                             and orders its neighbors at the same distance}
        \cgalParamType{a model of `ReadablePropertyMap` whose key type is the value type
                       of the iterator of `PointRange` and whose value type is convertible to `std::uint64_t`}
        \cgalParamDefault{the position of the point in `points`}
-       \cgalParamExtra{The id keys the point's random stream, and orders the neighbors at the same distance from a
-                       point (a neighborhood lists its points nearest first). With ids that do not depend on the
-                       range, such as the positions of the points in the whole cloud, a part of the cloud gives each
-                       point whose support (see `support_radius_map`) it holds the same normal, bit for bit, as the
-                       whole cloud does. The ids should be distinct: points with the same id draw the same random
-                       numbers, and two of them at the same distance from a point are ordered as they come.}
+       \cgalParamExtra{With the ids of the whole cloud, a part of it gives each point whose support
+                       (`support_radius_map`) it holds the same normal, bit for bit. Ids should be distinct.}
      \cgalParamNEnd
 
      \cgalParamNBegin{support_radius_map}
-       \cgalParamDescription{a property map receiving, for each point, the radius of its support: the ball centered on
-                             the point that holds every point its normal depends on (beyond the paper)}
+       \cgalParamDescription{a property map receiving the radius of each point's support: the ball around the point
+                             that holds every point its normal depends on}
        \cgalParamType{a model of `WritablePropertyMap` whose key type is the value type
                       of the iterator of `PointRange` and whose value type is `double`}
        \cgalParamDefault{unused}
-       \cgalParamExtra{It is the radius of the point's neighborhood (the distance to its `k`-th nearest neighbor, or
-                       `neighbor_radius`); with `refit`, whose second pass reads the noise estimated around each
-                       neighbor, the largest distance to a neighbor plus the radius of that neighbor's neighborhood;
-                       with `least_squares_first`, whose tests read the neighborhoods of the neighbors of the point and
-                       of its neighbors, the largest such distance over the point and its neighbors.
-                       0 for a point with a non-finite coordinate; infinite where the neighborhood is all of a cloud
-                       of fewer points than it asks for (at most `k`). A part of the cloud that holds every point of the
-                       whole cloud within this radius of a point (the sphere included) gives that point the same
-                       normal, bit for bit, as the whole cloud, with the same `point_id_map`. Computed in double
-                       precision: allow a margin of a few units in the last place when comparing it to a distance.}
+       \cgalParamExtra{0 for a point with a non-finite coordinate; infinite where the neighborhood is the whole
+                       cloud, which has fewer points than it asks for. Computed in double precision: allow a few
+                       units in the last place when comparing it to a distance.}
      \cgalParamNEnd
 
      \cgalParamNBegin{neighbor_only_map}
-       \cgalParamDescription{a property map telling which points are only neighbors of the others: they get no normal
-                             (beyond the paper)}
+       \cgalParamDescription{a property map telling which points are only neighbors of the others, as the halo of a
+                             tile: nothing is written for them and their estimation is saved}
        \cgalParamType{a model of `ReadablePropertyMap` whose key type is the value type
                       of the iterator of `PointRange` and whose value type is `bool`}
        \cgalParamDefault{no point is only a neighbor}
-       \cgalParamExtra{Nothing is written for the points where it is `true` (normal, confidence, support), and their
-                       estimation is saved (with `refit`, only their second pass: the first gives the noise around
-                       them that their neighbors' refit reads). The other points get the normals they would get
-                       with all estimated. For the halo of a tile, which its points need as neighbors (see
-                       `point_id_map`).}
      \cgalParamNEnd
    \cgalNamedParamsEnd
 

@@ -24,6 +24,7 @@ namespace CGAL {
 namespace RRHT {
 namespace IO {
 
+/// \ingroup PkgRRHTRef
 /// A LAS file that cannot be read or written as asked; the message names
 /// the file and says what is wrong.
 class LAS_error : public std::runtime_error
@@ -32,23 +33,27 @@ public:
   using std::runtime_error::runtime_error;
 };
 
+/// \ingroup PkgRRHTRef
 /// A variable-length record of a LAS file, regular (between the header and
-/// the points) or extended (after the points).
+/// the points) or extended (after the points; LAS 1.4 R15, Sections 2.5 and 2.7).
 struct LAS_record
 {
-  std::string user_id;
-  std::uint16_t record_id = 0;
-  bool extended = false;
-  std::uint64_t begin = 0;  ///< where its header is in the file
-  std::uint64_t length = 0; ///< its payload's length, after its header
+  std::string user_id;          ///< the user id, as `LASF_Projection` or `LASF_Spec`
+  std::uint16_t record_id = 0;  ///< the record id, as 4 for the extra bytes of `LASF_Spec`
+  bool extended = false;        ///< whether it is an extended record, after the points
+  std::uint64_t begin = 0;      ///< where its header is in the file
+  std::uint64_t length = 0;     ///< its payload's length, after its header
+  /// \return where it ends in the file: its header's 54 bytes (60 for an
+  /// extended record) and its payload after `begin`
   std::uint64_t end() const { return begin + (extended ? 60 : 54) + length; }
 };
 
+/// \ingroup PkgRRHTRef
 /// One field of the extra bytes at the end of each point record, as the
-/// extra-bytes record (LASF_Spec / 4) describes it.
+/// extra-bytes record (LASF_Spec / 4) describes it (Section 4.3).
 struct LAS_extra_bytes_field
 {
-  std::string name;
+  std::string name;           ///< its name, as `NormalX`
   unsigned int data_type = 0; ///< 1 to 10 (unsigned char to double), 11 to 30 arrays, 0 undocumented bytes
   std::size_t offset = 0;     ///< in the point record
   std::size_t size = 0;       ///< in bytes
@@ -56,6 +61,7 @@ struct LAS_extra_bytes_field
   double value_offset = 0.;   ///< 1 and 0 where the descriptor gives none
 };
 
+/// \ingroup PkgRRHTRef
 /// An uncompressed LAS file. Opening it reads its header and its
 /// variable-length records and checks that they describe a file that can
 /// be read: every check names what is wrong. A compressed (LAZ) file is
@@ -66,6 +72,7 @@ class LAS_file
 {
 public:
   /// Opens and checks the file at `path`.
+  /// \param path the file's path
   /// \throws LAS_error if it cannot be read, is not an uncompressed LAS
   /// 1.0 to 1.4 file of point format 0 to 10, or is truncated or
   /// inconsistent.
@@ -82,35 +89,45 @@ public:
     read_extra_bytes(in);
   }
 
+  /// \return the path it was opened with
   const std::string& path() const { return m_path; }
+  /// \return the size of the file, in bytes
   std::uint64_t file_size() const { return m_file_size; }
+  /// \return the minor version of LAS 1.x, 0 to 4
   unsigned int version_minor() const { return m_header[internal::header::version_minor]; }
-  /// The point data record format, 0 to 10.
+  /// \return the point data record format, 0 to 10
   unsigned int point_format() const { return m_format; }
-  /// The length of a point record, extra bytes included.
+  /// \return the length of a point record, extra bytes included
   std::size_t record_length() const { return m_record_length; }
-  /// The number of point records.
+  /// \return the number of point records
   std::uint64_t size() const { return m_size; }
-  /// Where the point records begin, and where they end.
+  /// \return where the point records begin in the file
   std::uint64_t points_begin() const { return m_points_begin; }
+  /// \return where the point records end in the file
   std::uint64_t points_end() const { return m_points_begin + m_size * m_record_length; }
-  /// The Public Header Block as stored, user-defined bytes included.
+  /// \return the Public Header Block as stored, user-defined bytes included
   const std::vector<unsigned char>& header() const { return m_header; }
-  /// The scale and offset of the coordinates: x = X * scale[0] + offset[0].
+  /// \return the scale of the coordinates: x = X * scale[0] + offset[0]
   const std::array<double, 3>& scale() const { return m_scale; }
+  /// \return the offset of the coordinates
   const std::array<double, 3>& offset() const { return m_offset; }
-  /// The variable-length records, regular then extended, in the file's order.
+  /// \return the variable-length records, regular then extended, in the file's order
   const std::vector<LAS_record>& records() const { return m_records; }
-  /// The extra-bytes record, or null.
+  /// \return the extra-bytes record, or null
   const LAS_record* extra_bytes_record() const
   {
     return m_extra_bytes_record == no_record ? nullptr : &m_records[m_extra_bytes_record];
   }
-  /// The fields of the extra bytes that the extra-bytes record describes,
-  /// in the records' order.
+  /// \return the fields of the extra bytes that the extra-bytes record
+  /// describes, in the records' order
   const std::vector<LAS_extra_bytes_field>& extra_bytes() const { return m_extra_bytes; }
 
   /// Reads the bytes of `count` point records from the record `first`.
+  /// \param first the first record
+  /// \param count the number of records
+  /// \param out `count * record_length()` bytes
+  /// \throws std::out_of_range if the records are not all in the file
+  /// \throws LAS_error if the file cannot be read
   void read_records(std::uint64_t first, std::uint64_t count, unsigned char* out) const
   {
     if(first > m_size || count > m_size - first)
@@ -128,6 +145,9 @@ public:
   /// Writes to `xyz` the coordinates of `count` points from the record
   /// `first`, as x y z triples: X * scale + offset in double precision,
   /// as the specification defines them (Section 2.4).
+  /// \param first the first record
+  /// \param count the number of records
+  /// \param xyz `3 * count` numbers
   void read_points(std::uint64_t first, std::uint64_t count, double* xyz) const
   {
     for_each_record(first, count,
@@ -137,6 +157,10 @@ public:
   /// Writes to `values` the field `name` of the extra bytes of `count`
   /// points from the record `first`: the number stored times the scale
   /// plus the offset that its descriptor gives (Section 4.3).
+  /// \param name the field's name
+  /// \param first the first record
+  /// \param count the number of records
+  /// \param values `count` numbers
   /// \throws LAS_error if no field of one number has this name.
   void read_field(const std::string& name, std::uint64_t first, std::uint64_t count, double* values) const
   {
@@ -147,7 +171,8 @@ public:
     });
   }
 
-  /// The field of one number named `name` of the extra bytes.
+  /// \param name a field's name
+  /// \return the field of one number (data type 1 to 10) named `name` of the extra bytes
   /// \throws LAS_error if there is none.
   const LAS_extra_bytes_field& extra_bytes_field(const std::string& name) const
   {
@@ -163,7 +188,9 @@ public:
          (scalars.empty() ? std::string("they have none") : "they have " + scalars) + ")");
   }
 
-  /// The coordinates of one point record, as `read_points()` gives them.
+  /// Writes to `xyz` the coordinates of one point record, as `read_points()` gives them.
+  /// \param record the bytes of a point record
+  /// \param xyz 3 numbers
   void coordinates(const unsigned char* record, double* xyz) const
   {
     for(int axis = 0; axis < 3; ++axis)

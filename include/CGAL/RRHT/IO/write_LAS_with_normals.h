@@ -29,6 +29,7 @@ namespace CGAL {
 namespace RRHT {
 namespace IO {
 
+/// \ingroup PkgRRHTRef
 /// The names of the extra bytes that hold the normal's coordinates, as
 /// PDAL's `filters.normal` and `writers.las` name them, and the confidence.
 inline const std::array<const char*, 4> LAS_normal_names = { "NormalX", "NormalY", "NormalZ", "NormalConfidence" };
@@ -133,6 +134,7 @@ inline std::vector<unsigned char> record_header(const LAS_record& record, std::u
 
 } // namespace internal
 
+/// \ingroup PkgRRHTRef
 /// Writes to `out` the LAS file `input` with one normal per point record:
 /// every record kept byte for byte and followed by the normal's
 /// coordinates as extra bytes `NormalX`, `NormalY`, `NormalZ` (doubles,
@@ -150,8 +152,10 @@ inline std::vector<unsigned char> record_header(const LAS_record& record, std::u
 /// records move are updated, and the bounds and the counts of points by
 /// return are computed from the records.
 ///
-/// `normals` holds 3 numbers per point record, `confidences` 1, in the
-/// order of the records.
+/// \param input the LAS file whose records are written
+/// \param out a binary stream, at its beginning (the header is written again at the end)
+/// \param normals 3 numbers per point record, in the order of the records
+/// \param confidences 1 number per point record, or null
 /// \throws LAS_error if the input cannot be read or the output would not
 /// be a valid LAS file.
 inline void write_LAS_with_normals(const LAS_file& input, std::ostream& out, const double* normals,
@@ -338,9 +342,17 @@ inline void write_LAS_with_normals(const LAS_file& input, std::ostream& out, con
     throw LAS_error("could not write the LAS file with the normals of " + input.path());
 }
 
-/// Writes the file `output` as above, through a temporary file in the same
-/// folder renamed at the end: a failed write leaves no partial file in
-/// place of an earlier one.
+/// \ingroup PkgRRHTRef
+/// Writes the file `output` as the function above writes a stream, through
+/// a temporary file in the same folder renamed at the end: a failed write
+/// leaves no partial file in place of an earlier one.
+/// \param input the LAS file whose records are written
+/// \param output the path of the file written
+/// \param normals 3 numbers per point record, in the order of the records
+/// \param confidences 1 number per point record, or null
+/// \throws LAS_error if the input cannot be read or the output cannot be
+/// written, `std::filesystem::filesystem_error` if the temporary file cannot
+/// be renamed.
 inline void write_LAS_with_normals(const LAS_file& input, const std::string& output, const double* normals,
                                    const double* confidences = nullptr)
 {
