@@ -416,7 +416,7 @@ void bind_LAS_file(py::module_& m)
                            [](const LAS_file& file) {
                              std::vector<std::string> names;
                              for(const auto& field : file.extra_bytes())
-                               if(field.data_type >= 1 && field.data_type <= 10)
+                               if(field.holds_one_number())
                                  names.push_back(field.name);
                              return names;
                            },

@@ -59,6 +59,8 @@ struct LAS_extra_bytes_field
   std::size_t size = 0;       ///< in bytes
   double scale = 1.;          ///< a value is the number stored times `scale` plus `value_offset`:
   double value_offset = 0.;   ///< 1 and 0 where the descriptor gives none
+  /// \return whether the field holds one number (data type 1 to 10), which `LAS_file::read_field()` reads
+  bool holds_one_number() const { return data_type >= 1 && data_type <= 10; }
 };
 
 /// \ingroup PkgRRHTRef
@@ -178,7 +180,7 @@ public:
   {
     std::string scalars;
     for(const LAS_extra_bytes_field& field : m_extra_bytes)
-      if(field.data_type >= 1 && field.data_type <= 10)
+      if(field.holds_one_number())
       {
         if(field.name == name)
           return field;

@@ -138,7 +138,7 @@ inline double read_value(const unsigned char* bytes, unsigned int data_type)
   case 3: return read_unsigned<std::uint16_t>(bytes);
   case 4: return as_signed(read_unsigned<std::uint16_t>(bytes), std::int16_t());
   case 5: return read_unsigned<std::uint32_t>(bytes);
-  case 6: return as_signed(read_unsigned<std::uint32_t>(bytes), std::int32_t());
+  case 6: return read_int32(bytes);
   case 7: return double(read_unsigned<std::uint64_t>(bytes));
   case 8: return as_signed(read_unsigned<std::uint64_t>(bytes), std::int64_t());
   case 9:
