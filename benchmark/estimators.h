@@ -55,7 +55,7 @@ inline auto sample_maps() { return CGAL::RRHT::parameters::point_map(Point_of_sa
 /// variants and the options below are built.
 inline auto paper_sample_maps()
 {
-  return CGAL::RRHT::parameters::paper_precise().point_map(Point_of_sample()).normal_map(Normal_of_sample());
+  return CGAL::RRHT::parameters::setting(CGAL::RRHT::Setting::PAPER_PRECISE).point_map(Point_of_sample()).normal_map(Normal_of_sample());
 }
 
 /// RRHT settings of the paper's Section 6.

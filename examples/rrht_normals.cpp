@@ -78,13 +78,6 @@ const std::vector<std::string> output_extensions = { ".xyz", ".pwn", ".ply", ".l
 // A LAZ file is given to the LAS reader, which says how to decompress it.
 const std::vector<std::string> las_extensions = { ".las", ".laz" };
 
-// The names of the choices of --setting; those of --sampling and
-// --aggregation are the library's (CGAL::RRHT::sampling_names, aggregation_names).
-enum class Setting { DEFAULT, PAPER_PRECISE, PAPER_FAST };
-const std::array<std::pair<const char*, Setting>, 3> settings = {
-  { { "default", Setting::DEFAULT }, { "paper_precise", Setting::PAPER_PRECISE }, { "paper_fast", Setting::PAPER_FAST } }
-};
-
 // "a, b or c".
 std::string one_of(const std::vector<std::string>& names)
 {
@@ -303,11 +296,11 @@ void orient(std::vector<Point_with_normal>& points, const std::string& how, cons
 int main(int argc, char** argv)
 {
   const std::string setting_help =
-    one_of(names_of(settings)) + ": least squares where the neighborhood is one smooth sheet, the adaptive Hough "
+    one_of(names_of(CGAL::RRHT::setting_names)) + ": least squares where the neighborhood is one smooth sheet, the adaptive Hough "
     "transform elsewhere (default), or the paper's settings, the Hough transform everywhere (paper_precise: T_R from "
     "eq. 7 and 5 rotations; paper_fast: 300 planes and 2 rotations, unless --planes or --rotations say otherwise)";
   const std::string sampling_help = "triple sampling: " + one_of(names_of(CGAL::RRHT::sampling_names)) +
-                                    " (with --adaptive, part of the default, only unif changes anything)";
+                                    " (with the default setting, only unif changes anything)";
   const std::string aggregation_help = one_of(names_of(CGAL::RRHT::aggregation_names));
   po::options_description described("Options");
   described.add_options()
@@ -317,20 +310,16 @@ int main(int argc, char** argv)
     ("radius,r", po::value<double>()->default_value(0., "0 (k-neighborhoods)"),
      "r: neighborhood ball radius")
     ("setting", po::value<std::string>()->default_value("default"), setting_help.c_str())
-    ("planes", po::value<long long>()->default_value(0, "eq. 7, 691 for 15 slices"),
+    ("planes", po::value<long long>()->default_value(0, "eq. 7, 691 for 15 slices; 300 with paper_fast"),
      "T_R: most planes drawn per accumulator (1 to 100000000)")
-    ("rotations", po::value<long long>()->default_value(5), "n_rot: randomly rotated accumulators (1 to 100000)")
+    ("rotations", po::value<long long>()->default_value(5, "5; 2 with paper_fast"),
+     "n_rot: randomly rotated accumulators (1 to 100000)")
     ("slices", po::value<long long>()->default_value(15), "n_phi: slices of the accumulator (1 to 1000)")
     ("sampling", po::value<std::string>()->default_value("points"), sampling_help.c_str())
     ("presampling", po::value<long long>()->default_value(4), "c: cubes per axis / small-ball factor (1 to 32)")
     ("aggregation", po::value<std::string>()->default_value("cluster"), aggregation_help.c_str())
     ("cluster-angle", po::value<double>()->default_value(45.), "a_cluster in degrees (0 to 180)")
     ("no-confidence-interval", "do not stop early on disjoint confidence intervals (eq. 10)")
-    ("adaptive", "with a paper setting, the adaptive setting: the fast setting everywhere, estimated again with "
-                 "--planes and --rotations where its confidence is low (beyond the paper; part of the default)")
-    ("least-squares-first", "with a paper setting, least squares first: the quadric of jet fitting where the "
-                            "neighborhood is one smooth sheet, the Hough transform elsewhere (beyond the paper; part "
-                            "of the default)")
     ("refit", "refit each normal by least squares (a quadric on the neighbors within the noise of its plane, "
               "or two parallel planes) where the neighborhood is one smooth sheet or the two sides of a thin part "
               "(beyond the paper)")
@@ -347,10 +336,15 @@ int main(int argc, char** argv)
     ("confidence", "also write each normal's confidence, from 0 to 1: a PLY property 'confidence', a 7th "
                    "column in .xyz, extra bytes NormalConfidence in .las")
     ("quiet,q", "no progress bar");
+  // Replaced by --setting, accepted with a warning for one release.
+  po::options_description deprecated("Deprecated options");
+  deprecated.add_options()
+    ("adaptive", "with a paper setting, its adaptive Hough transform without least squares (use --setting)")
+    ("least-squares-first", "with a paper setting, its least squares first (use --setting)");
   po::options_description hidden;
   hidden.add_options()("input", po::value<std::string>())("output", po::value<std::string>());
   po::options_description all;
-  all.add(described).add(hidden);
+  all.add(described).add(deprecated).add(hidden);
   po::positional_options_description positional;
   positional.add("input", 1).add("output", 1);
 
@@ -373,7 +367,7 @@ int main(int argc, char** argv)
     po::notify(options);
     if(options.count("help"))
     {
-      std::cout << usage << "\n" << described << std::endl;
+      std::cout << usage << "\n" << described << "\n" << deprecated << std::endl;
       return EXIT_SUCCESS;
     }
     if(!options.count("input"))
@@ -400,10 +394,14 @@ int main(int argc, char** argv)
     const unsigned int k = static_cast<unsigned int>(options["neighbors"].as<long long>());
     // The setting gives the defaults of the options below; an option given
     // on the command line wins.
-    const Setting setting = choice(options, "setting", settings);
-    const bool paper = setting != Setting::DEFAULT, fast = setting == Setting::PAPER_FAST;
-    // 0 planes: the library's default.
-    const long long planes = fast && options["planes"].defaulted() ? 300 : options["planes"].as<long long>();
+    const CGAL::RRHT::Setting setting = choice(options, "setting", CGAL::RRHT::setting_names);
+    const bool paper = setting != CGAL::RRHT::Setting::DEFAULT, fast = setting == CGAL::RRHT::Setting::PAPER_FAST;
+    for(const char* name : { "adaptive", "least-squares-first" })
+      if(options.count(name))
+        std::cerr << "rrht_normals: warning: --" << name << " is deprecated and will be removed: use --setting"
+                  << std::endl;
+    // 0 planes: the setting's default, the library's.
+    const long long planes = options["planes"].as<long long>();
     const long long rotations = fast && options["rotations"].defaulted() ? 2 : options["rotations"].as<long long>();
     const auto np = CGAL::RRHT::parameters::point_map(Point_map())
                       .normal_map(Normal_map())
@@ -411,6 +409,8 @@ int main(int argc, char** argv)
                       .number_of_rotations(rotations)
                       .accumulator_slices(options["slices"].as<long long>())
                       .use_confidence_interval(options.count("no-confidence-interval") == 0)
+                      .setting(setting)
+                      // The deprecated switches: both on with the default setting.
                       .least_squares_first(!paper || options.count("least-squares-first") > 0)
                       .adaptive(!paper || options.count("adaptive") > 0)
                       .refit(options.count("refit") > 0)

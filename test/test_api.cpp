@@ -39,6 +39,7 @@
 namespace params = CGAL::RRHT::parameters;
 using CGAL::RRHT::Sampling;
 using CGAL::RRHT::Aggregation;
+using CGAL::RRHT::Setting;
 
 namespace {
 
@@ -225,20 +226,19 @@ TEST_CASE("Every documented named-parameter form", "[api][parameters]")
   // are least squares first with the adaptive Hough transform.
   const auto defaults = run(CGAL::parameters::point_map(point_map).normal_map(normal_map));
   CHECK(share_above_10_degrees(defaults, truth) < 0.12);
-  CHECK(run(params::point_map(point_map).normal_map(normal_map).least_squares_first(true).adaptive(true)) == defaults);
+  CHECK(run(params::point_map(point_map).normal_map(normal_map).setting(Setting::DEFAULT)) == defaults);
   {
     Pair_cloud<SC> cloud = input; // the same expression still works with jet fitting
     CGAL::jet_estimate_normals<CGAL::Sequential_tag>(cloud, 40, CGAL::parameters::point_map(point_map).normal_map(normal_map));
   }
-  // 2. The paper's precise setting: the preset, and an RRHT chain repeating
-  // its values explicitly, give the same normals.
-  const auto precise = run(params::paper_precise().point_map(point_map).normal_map(normal_map));
+  // 2. The paper's precise setting, and an RRHT chain repeating its values
+  // explicitly, give the same normals.
+  const auto precise = run(params::setting(Setting::PAPER_PRECISE).point_map(point_map).normal_map(normal_map));
   CHECK(share_above_10_degrees(precise, truth) < 0.08);
   CHECK(precise != defaults);
   const auto explicit_precise = run(params::point_map(point_map)
                                       .normal_map(normal_map)
-                                      .least_squares_first(false)
-                                      .adaptive(false)
+                                      .setting(Setting::PAPER_PRECISE)
                                       .refit(false)
                                       .number_of_planes(CGAL::RRHT::hoeffding_number_of_planes(172))
                                       .accumulator_slices(15)
@@ -250,29 +250,36 @@ TEST_CASE("Every documented named-parameter form", "[api][parameters]")
                                       .cluster_angle(45.)
                                       .random_seed(0));
   CHECK(explicit_precise == precise);
-  // 3. RRHT parameters first, then CGAL ones, in any order: the same normals;
-  // the paper's fast setting is its preset.
-  const auto fast = run(params::least_squares_first(false).number_of_planes(300).point_map(point_map)
-                          .number_of_rotations(2).normal_map(normal_map).adaptive(false));
-  const auto fast_reordered = run(params::normal_map(normal_map).adaptive(false).number_of_rotations(2)
-                                    .point_map(point_map).number_of_planes(300).least_squares_first(false));
-  CHECK(fast == fast_reordered);
+  // 3. RRHT parameters first, then CGAL ones, in any order: the same normals.
+  // The fast setting is the precise one with 300 planes and 2 rotations, and
+  // a value given wins over the setting's, wherever it stands in the chain.
+  const auto fast = run(params::setting(Setting::PAPER_FAST).point_map(point_map).normal_map(normal_map));
+  CHECK(run(params::normal_map(normal_map).number_of_rotations(2).setting(Setting::PAPER_PRECISE)
+              .point_map(point_map).number_of_planes(300)) == fast);
+  CHECK(fast != precise); // the setting is read
+  CHECK(run(params::number_of_planes(CGAL::RRHT::hoeffding_number_of_planes(172)).number_of_rotations(5)
+              .setting(Setting::PAPER_FAST).point_map(point_map).normal_map(normal_map)) == precise);
+  // The deprecated spellings, kept for one release: the presets, and the
+  // switches, which win over the setting.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+  CHECK(run(params::paper_precise().point_map(point_map).normal_map(normal_map)) == precise);
   CHECK(run(params::paper_fast().point_map(point_map).normal_map(normal_map)) == fast);
-  CHECK(fast != precise); // the parameters are read
-  // A parameter appended to a preset wins over the preset's.
-  CHECK(run(params::paper_fast().number_of_planes(CGAL::RRHT::hoeffding_number_of_planes(172)).number_of_rotations(5)
-              .point_map(point_map).normal_map(normal_map)) == precise);
-  CHECK(run(params::paper_precise().least_squares_first(true).adaptive(true).point_map(point_map)
+#pragma GCC diagnostic pop
+  CHECK(run(params::least_squares_first(false).adaptive(false).point_map(point_map).normal_map(normal_map)) == precise);
+  CHECK(run(params::setting(Setting::PAPER_PRECISE).least_squares_first(true).adaptive(true).point_map(point_map)
               .normal_map(normal_map)) == defaults);
+  // An unknown setting is refused before anything is written.
+  CHECK_THROWS_AS(run(params::setting(static_cast<Setting>(7)).point_map(point_map).normal_map(normal_map)),
+                  std::invalid_argument);
   // 4. From an empty chain.
   CHECK(run(params::default_values().point_map(point_map).normal_map(normal_map)) == defaults);
   // 5. Extending a CGAL chain received from elsewhere.
   const auto cgal_chain = CGAL::parameters::point_map(point_map).normal_map(normal_map);
-  CHECK(run(params::extend(cgal_chain).number_of_rotations(2).number_of_planes(300).least_squares_first(false)
-              .adaptive(false)) == fast);
+  CHECK(run(params::extend(cgal_chain).setting(Setting::PAPER_FAST)) == fast);
   CHECK(run(params::extend(cgal_chain)) == defaults);
   // 6. Each RRHT parameter changes the result.
-  const auto base = params::paper_precise().point_map(point_map).normal_map(normal_map);
+  const auto base = params::setting(Setting::PAPER_PRECISE).point_map(point_map).normal_map(normal_map);
   CHECK(run(base.accumulator_slices(10)) != precise);
   CHECK(run(base.use_confidence_interval(false)) != precise);
   CHECK(run(base.sampling(Sampling::CUBES)) != precise);
@@ -285,10 +292,7 @@ TEST_CASE("Every documented named-parameter form", "[api][parameters]")
   CHECK(run(base.adaptive(true)) != precise);
   CHECK(run(base.least_squares_first(true)) != precise);
   CHECK(run(base.refit(true)) != precise);
-  // The refit applies where the Hough transform's normal is taken: with
-  // least squares first, at few of these 2000 points.
-  CHECK(run(params::extend(cgal_chain).least_squares_first(false).refit(true)) !=
-        run(params::extend(cgal_chain).least_squares_first(false)));
+  CHECK(run(params::extend(cgal_chain).setting(Setting::PAPER_FAST).refit(true)) != fast);
   // 7. An RRHT chain is a CGAL chain: CGAL's own functions take it.
   {
     Pair_cloud<SC> cloud = input;
@@ -371,7 +375,7 @@ TEST_CASE("Same seed, same normals, bit for bit, whatever the concurrency and th
   check_setting("adaptive", params::extend(pair_maps<SC>).adaptive(true));
   check_setting("refit", params::extend(pair_maps<SC>).refit(true));
   check_setting("refit with a radius", params::extend(pair_maps<SC>).refit(true).neighbor_radius(0.3));
-  check_setting("least squares first", params::extend(pair_maps<SC>).least_squares_first(true).adaptive(true));
+  check_setting("default", params::extend(pair_maps<SC>).setting(Setting::DEFAULT));
   check_setting("least squares first with refit and a radius",
                 params::extend(pair_maps<SC>).least_squares_first(true).refit(true).neighbor_radius(0.3));
 }
@@ -401,8 +405,8 @@ TEST_CASE("confidence_map: into a Point_set_3 property, the same whatever the th
   // where a quadric's normal may be off every bin of the Hough transform.
   for(bool paper : { true, false })
   {
-    INFO((paper ? "paper_precise()" : "defaults"));
-    const auto np = paper ? params::paper_precise() : params::least_squares_first(true).adaptive(true);
+    INFO((paper ? "PAPER_PRECISE" : "DEFAULT"));
+    const auto np = params::setting(paper ? Setting::PAPER_PRECISE : Setting::DEFAULT);
     const auto sequential = run(CGAL::Sequential_tag(), 1, np);
     std::size_t positive = 0;
     for(std::size_t i = 0; i < truth.size(); ++i)
@@ -456,14 +460,14 @@ TEST_CASE("The callback reports progress, and returning false stops, leaving the
     // in the first, every normal is left unchanged.
     for(bool paper : { true, false })
     {
-      INFO((paper ? "paper_precise()" : "defaults"));
+      INFO((paper ? "PAPER_PRECISE" : "DEFAULT"));
       Pair_cloud<SC> cloud = to_pairs<SC>(large);
       for(auto& pn : cloud)
         pn.second = untouched;
       std::function<bool(double)> stop = [](double) { return false; };
       CGAL::rrht_estimate_normals<Tag>(
         cloud, 10, params::extend(pair_maps<SC>).callback(stop).number_of_planes(10).number_of_rotations(1)
-                     .least_squares_first(!paper).adaptive(!paper));
+                     .setting(paper ? Setting::PAPER_PRECISE : Setting::DEFAULT));
       std::size_t estimated = 0, unchanged = 0;
       for(const auto& pn : cloud)
       {
@@ -653,7 +657,7 @@ TEST_CASE("Bad input: a clear exception or a documented result, never NaN", "[ap
           CHECK((normal == null || std::abs(normal.squared_length() - 1) < 1e-12));
     };
     check(maps);
-    check(maps.least_squares_first(false).adaptive(false));
+    check(maps.setting(Setting::PAPER_PRECISE));
   }
   SECTION("invalid parameters throw std::invalid_argument and write nothing")
   {
@@ -846,7 +850,7 @@ TEST_CASE("point_id_map: a part of the cloud gives each point whose support it h
   const auto defaults = identified_maps.random_seed(9);
   CHECK(check_part_against_whole(cube, 0.2, with(50, defaults)) > 0.4);
   CHECK(check_part_against_whole(cube, 0.2, with(30, defaults.neighbor_radius(0.25))) > 0.4);
-  const auto np = defaults.least_squares_first(false).adaptive(false); // the paper's precise setting
+  const auto np = defaults.setting(Setting::PAPER_PRECISE);
   CHECK(check_part_against_whole(cube, 0.2, with(50, np)) > 0.6);
   CHECK(check_part_against_whole(cube, 0.2, with(50, np.sampling(Sampling::CUBES).number_of_planes(200))) > 0.6);
   CHECK(check_part_against_whole(cube, 0.2, with(50, np.sampling(Sampling::UNIF).number_of_planes(200))) > 0.6);
@@ -884,7 +888,7 @@ TEST_CASE("point_id_map: by default the id is the position, and support_radius_m
   // Other ids, other random streams: other normals wherever the Hough
   // transform gives them (everywhere with the paper's setting; the default's
   // quadrics do not depend on the streams).
-  const auto paper = identified_maps.least_squares_first(false).adaptive(false);
+  const auto paper = identified_maps.setting(Setting::PAPER_PRECISE);
   std::vector<Identified> plain = identified(points), shifted = identified(points);
   for(Identified& e : shifted)
     std::get<2>(e) += 1000000;
@@ -955,7 +959,7 @@ TEST_CASE("neighbor_only_map: those points get nothing written, the others their
   for(int setting : { 0, 1, 2 })
   {
     // The paper's precise setting, with the refit, and the defaults.
-    const auto np = identified_maps.refit(setting == 1).least_squares_first(setting == 2).adaptive(setting == 2);
+    const auto np = identified_maps.refit(setting == 1).setting(setting == 2 ? Setting::DEFAULT : Setting::PAPER_PRECISE);
     std::vector<Identified> all = identified(points), some = identified(points);
     CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(all, 40, np);
     CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(some, 40, np.neighbor_only_map(Beyond_cut{ 0.2 }));
@@ -987,12 +991,10 @@ TEST_CASE("Least squares first: the confidence written is that of the normal ret
   const std::vector<SC::Point_3> points = points_of(noisy_cube(3000));
   std::vector<Identified> with = identified(points), without = identified(points);
   CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(
-    with, 50, identified_maps.least_squares_first(true).adaptive(true));
+    with, 50, identified_maps);
   CGAL::rrht_estimate_normals<CGAL::Parallel_if_available_tag>(
     without, 50, params::point_map(CGAL::Nth_of_tuple_property_map<0, Identified>())
-                   .normal_map(CGAL::Nth_of_tuple_property_map<1, Identified>())
-                   .least_squares_first(true)
-                   .adaptive(true));
+                   .normal_map(CGAL::Nth_of_tuple_property_map<1, Identified>()));
   for(std::size_t i = 0; i < points.size(); ++i)
     REQUIRE(std::get<1>(with[i]) == std::get<1>(without[i]));
   // On the faces, where the quadric is kept, most of the triples that

@@ -26,7 +26,7 @@ namespace params = CGAL::RRHT::parameters;
 namespace {
 
 // The paper's precise setting, whose figures the tests below reproduce.
-const auto maps = params::paper_precise().point_map(Point_of_sample()).normal_map(Normal_of_sample());
+const auto maps = params::setting(CGAL::RRHT::Setting::PAPER_PRECISE).point_map(Point_of_sample()).normal_map(Normal_of_sample());
 
 Errors rrht(Cloud& cloud)
 {

@@ -10,6 +10,7 @@
 
 #include <CGAL/RRHT/Aggregation.h>
 #include <CGAL/RRHT/Sampling.h>
+#include <CGAL/RRHT/Setting.h>
 #include <CGAL/RRHT/hoeffding_number_of_planes.h>
 #include <CGAL/RRHT/parameters.h>
 
@@ -68,19 +69,14 @@ namespace CGAL {
    the neighbors, or spatially uniformly in the neighborhood ball to resist
    density variations.
 
-   By default, the Hough transform runs only where it is needed
-   (`least_squares_first` and `adaptive`, beyond the paper): where the
-   neighborhood of a point is one smooth sheet within the noise, or one side
-   of a thin part, the normal is that of a quadric fitted to it by least
-   squares, as `CGAL::jet_estimate_normals()` does; elsewhere, as along sharp
-   features, it is that of the Hough transform, run with the paper's fast
-   setting and again with its precise setting where the confidence of the
-   first is low. The user manual compares its accuracy and time with the
-   paper's settings and jet fitting's. The paper's settings are one call
-   away: `CGAL::RRHT::parameters::paper_precise()` (T_R = 691, n_rot = 5,
-   the defaults of every other parameter) and
-   `CGAL::RRHT::parameters::paper_fast()` (T_R = 300, n_rot = 2), chains to
-   go on with any other parameter.
+   By default, the Hough transform runs only where it is needed (beyond the
+   paper): where the neighborhood of a point is one smooth sheet within the
+   noise, or one side of a thin part, the normal is that of a quadric fitted
+   to it by least squares, as `CGAL::jet_estimate_normals()` does;
+   elsewhere, as along sharp features, it is that of the Hough transform,
+   run with the paper's fast setting and again with its precise setting
+   where the confidence of the first is low. The named parameter `setting`
+   chooses the paper's settings instead. The user manual compares them.
 
    The output normals are unit vectors, randomly oriented (use
    `CGAL::mst_orient_normals()` to orient them). Where no plane can be formed
@@ -154,8 +150,8 @@ namespace CGAL {
        \cgalParamDefault{unused}
        \cgalParamExtra{It is called after every block of 64 points with the advancement (from 0. to 1.), and
                        with 1. at the end; returning `false` stops the algorithm and leaves the remaining
-                       normals unchanged (with `least_squares_first`, every normal if stopped before the last
-                       third; with `refit` alone, the points its second pass did not reach keep their RRHT normal).
+                       normals unchanged (under `CGAL::RRHT::Setting::DEFAULT`, every normal if stopped before the last
+                       third; with `refit` under a paper setting, the points its second pass did not reach keep their RRHT normal).
                        It is copied, and with `CGAL::Parallel_tag` called from the worker threads, one at a time.}
      \cgalParamNEnd
 
@@ -167,30 +163,21 @@ namespace CGAL {
        \cgalParamDefault{unused}
        \cgalParamExtra{High where one plane holds the neighborhood, low near sharp features and where the normal
                        is wrong; noise lowers it evenly, so compare values within a cloud and a setting. 0 for a null
-                       normal. With `least_squares_first`, where a normal is kept without a vote, 50 triples are
+                       normal. Under `DEFAULT`, where a normal is kept without a vote, 50 triples are
                        drawn to measure it, which takes time: pass a map only where the confidences are read.}
      \cgalParamNEnd
    \cgalNamedParamsEnd
 
-   \cgalNamedParamsBegin{The setting: what runs where (beyond the paper; the presets
-                         CGAL::RRHT::parameters::paper_precise() and paper_fast() turn the first two off)}
-     \cgalParamNBegin{least_squares_first}
-       \cgalParamDescription{keep the normal of jet fitting's quadric where the neighborhood is one smooth sheet
-                             within the noise (or one side of a thin part), and run the Hough transform only at the
-                             other points}
-       \cgalParamType{bool}
-       \cgalParamDefault{`true`}
-     \cgalParamNEnd
-
-     \cgalParamNBegin{adaptive}
-       \cgalParamDescription{run the Hough transform with the paper's fast setting first, and again with
-                             `number_of_planes` and `number_of_rotations` where the confidence of that normal is low
-                             (with spatial sampling where it is lowest, as along sharp features), after the future
-                             work of the paper's Section 7}
-       \cgalParamType{bool}
-       \cgalParamDefault{`true`}
-       \cgalParamExtra{Each normal is one that a plain setting gives at the point; the confidence written is that
-                       of the normal kept.}
+   \cgalNamedParamsBegin{The setting: what runs where}
+     \cgalParamNBegin{setting}
+       \cgalParamDescription{the estimation: least squares where the neighborhood is one smooth sheet and the adaptive
+                             Hough transform elsewhere, or the Hough transform everywhere with one of the paper's
+                             settings}
+       \cgalParamType{`CGAL::RRHT::Setting`: `DEFAULT`, `PAPER_PRECISE` or `PAPER_FAST`}
+       \cgalParamDefault{`CGAL::RRHT::Setting::DEFAULT`}
+       \cgalParamExtra{It gives the defaults of `number_of_planes` and `number_of_rotations`. Under `DEFAULT`, they
+                       set the Hough transform's second stage, where the first one's confidence is low, and
+                       `sampling` changes something only as `UNIF`: that stage draws spatially where it is lowest.}
      \cgalParamNEnd
 
      \cgalParamNBegin{refit}
@@ -199,24 +186,38 @@ namespace CGAL {
                              elsewhere, as near sharp features, it stays}
        \cgalParamType{bool}
        \cgalParamDefault{`false`}
-       \cgalParamExtra{A second pass, about twice the time; the confidence written is still that of the RRHT normal.}
+       \cgalParamExtra{With any setting. A second pass, about twice the time; the confidence written is still that
+                       of the Hough transform's normal.}
+     \cgalParamNEnd
+
+     \cgalParamNBegin{least_squares_first}
+       \cgalParamDescription{deprecated, replaced by `setting`: the least squares of `DEFAULT`, on or off, whatever
+                             the setting}
+       \cgalParamType{bool}
+       \cgalParamDefault{`true` under `DEFAULT`, else `false`}
+     \cgalParamNEnd
+
+     \cgalParamNBegin{adaptive}
+       \cgalParamDescription{deprecated, replaced by `setting`: the adaptive Hough transform of `DEFAULT`, on or off,
+                             whatever the setting}
+       \cgalParamType{bool}
+       \cgalParamDefault{`true` under `DEFAULT`, else `false`}
      \cgalParamNEnd
    \cgalNamedParamsEnd
 
-   \cgalNamedParamsBegin{The paper's tuning knobs (under `adaptive` (part of the default) `number_of_planes`
-                         and `number_of_rotations` set its second stage; of `sampling` only `UNIF` changes
-                         anything there)}
+   \cgalNamedParamsBegin{The paper's tuning knobs (see `setting` for what the default reads of them)}
      \cgalParamNBegin{number_of_planes}
        \cgalParamDescription{T_R, the largest number of triples drawn per rotated accumulator (paper, eq. 7)}
        \cgalParamType{an integer from 1 to 100 000 000}
        \cgalParamDefault{the Hoeffding bound of eq. 7 with alpha = 0.95, delta = 0.08 and the number M of bins
-                         of the accumulator, `CGAL::RRHT::hoeffding_number_of_planes(M)`: 691 for 15 slices}
+                         of the accumulator, `CGAL::RRHT::hoeffding_number_of_planes(M)`: 691 for 15 slices;
+                         300 with `CGAL::RRHT::Setting::PAPER_FAST`}
      \cgalParamNEnd
 
      \cgalParamNBegin{number_of_rotations}
        \cgalParamDescription{n_rot, the number of randomly rotated accumulators (paper, Section 4)}
        \cgalParamType{an integer from 1 to 100 000}
-       \cgalParamDefault{`5`}
+       \cgalParamDefault{`5`; `2` with `CGAL::RRHT::Setting::PAPER_FAST`}
      \cgalParamNEnd
 
      \cgalParamNBegin{accumulator_slices}
@@ -236,8 +237,8 @@ namespace CGAL {
        \cgalParamDescription{how triples are drawn (paper, Section 5): uniformly among the neighbors, or spatially
                              uniformly in the neighborhood ball, which resists density variations at some cost in time}
        \cgalParamType{`CGAL::RRHT::Sampling`: `POINTS` (RRHT_Points), `CUBES` (RRHT_Cubes) or `UNIF` (RRHT_Unif)}
-       \cgalParamDefault{`CGAL::RRHT::Sampling::POINTS`; with `adaptive`, `CUBES` where it draws spatially,
-                         `UNIF` if `sampling` is `UNIF`}
+       \cgalParamDefault{`CGAL::RRHT::Sampling::POINTS`; under `CGAL::RRHT::Setting::DEFAULT`, `CUBES` where it
+                         draws spatially, `UNIF` if `sampling` is `UNIF`}
      \cgalParamNEnd
 
      \cgalParamNBegin{presampling_factor}
@@ -292,7 +293,8 @@ namespace CGAL {
    \cgalNamedParamsEnd
 
    \throws std::invalid_argument if `k` is 0 without a positive `neighbor_radius`, or if a parameter is out
-           of the range given above (a negative or non-finite radius, 0 planes, 0 rotations, 0 slices...), or if
+           of the range given above (a negative or non-finite radius, 0 planes, 0 rotations, 0 slices, a value
+           outside its enumeration...), or if
            `points` holds more than 2^32 - 1 points (as `CGAL::Point_set_3`'s 32-bit indices; larger clouds are
            processed in tiles). Nothing is written then. An empty range is left as it is.
 */

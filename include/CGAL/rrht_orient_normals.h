@@ -83,8 +83,8 @@ namespace CGAL {
    Clusters with no evidence between
    them, such as separate objects, are each oriented so. Only the lines of
    the given normals count: flipping any of them before the call changes
-   nothing in the result. See the user manual for the choice and its
-   measures.
+   nothing in the result. The user manual says why, and the benchmark
+   measures it.
 
    Points with a non-finite coordinate and points whose normal is null or has
    a non-finite coordinate are not oriented; neither are points whose

@@ -25,8 +25,9 @@ __all__ = ["estimate_normals", "orient_normals", "SETTINGS", "SAMPLINGS", "AGGRE
 __version__ = "0.1.0"
 
 #: The values of ``setting``: least squares first with the adaptive Hough transform
-#: (the default), and the paper's precise and fast settings (Section 6).
-SETTINGS = ("default", "paper_precise", "paper_fast")
+#: (the default), and the paper's precise and fast settings (Section 6), as the C++
+#: library names them.
+SETTINGS: Tuple[str, ...] = _core.SETTINGS
 #: The values of ``sampling``: RRHT_Points, RRHT_Cubes, RRHT_Unif (paper, Section 5),
 #: as the C++ library names them.
 SAMPLINGS: Tuple[str, ...] = _core.SAMPLINGS
@@ -142,12 +143,11 @@ def estimate_normals(
     normals are combined by ``aggregation``. By default, the Hough transform
     runs only where it is needed: where the neighborhood of a point is one
     smooth sheet within the noise, or one side of a thin part, the normal is
-    that of a quadric fitted by least squares, as jet fitting's
-    (``least_squares_first``); elsewhere, as along sharp features, it is the
-    Hough transform's, run cheaply first and again where its confidence is
-    low (``adaptive``). ``setting="paper_precise"`` and ``"paper_fast"``
-    run the paper's settings instead. The defaults are those of
-    ``CGAL::rrht_estimate_normals()``; the paper's names are in brackets.
+    that of a quadric fitted by least squares, as jet fitting's; elsewhere,
+    as along sharp features, it is the Hough transform's, run cheaply first
+    and again where its confidence is low. ``setting="paper_precise"`` and
+    ``"paper_fast"`` run the paper's settings instead. The defaults are those
+    of ``CGAL::rrht_estimate_normals()``; the paper's names are in brackets.
 
     Parameters
     ----------
@@ -160,13 +160,14 @@ def estimate_normals(
         its ``k`` nearest neighbors. With ``radius``, the cap on the number
         of neighbors taken from the ball (0: no cap).
     setting : {"default", "paper_precise", "paper_fast"}, default "default"
-        The defaults of ``least_squares_first``, ``adaptive``, ``planes``
-        and ``rotations``, which win where given: ``"default"``, least
-        squares first with the adaptive Hough transform; ``"paper_precise"``
-        (``CGAL::RRHT::parameters::paper_precise()``), the Hough transform
-        at every point with the Hoeffding bound of planes and 5 rotations;
-        ``"paper_fast"`` (``paper_fast()``), with 300 planes and 2
-        rotations.
+        The estimation (the named parameter ``setting`` of the C++
+        function): ``"default"``, least squares where the neighborhood is
+        one smooth sheet and the adaptive Hough transform elsewhere, which
+        runs the fast setting first and ``planes`` and ``rotations`` where
+        its confidence is low; ``"paper_precise"``, the Hough transform at
+        every point with the Hoeffding bound of planes and 5 rotations;
+        ``"paper_fast"``, with 300 planes and 2 rotations. ``planes`` and
+        ``rotations``, where given, win over the setting's.
     radius : float, optional
         The radius of a spherical neighborhood [r]; default: none (``k``
         nearest neighbors). A ball with more than ``k`` other points keeps
@@ -190,7 +191,7 @@ def estimate_normals(
         How triples are drawn: uniformly among the neighbors [RRHT_Points],
         or spatially uniformly in the neighborhood ball [RRHT_Cubes,
         RRHT_Unif], which resists density variations at some cost in time.
-        With ``adaptive`` (the default), only "unif" changes anything.
+        With the default setting, only "unif" changes anything.
     presampling : int, default 4
         The discretization of the ball for "cubes" (c^3 cubes) and "unif"
         (balls of radius r/c) [c], 1 to 32.
@@ -206,25 +207,6 @@ def estimate_normals(
         row): the same input and seed give the same normals, bit for bit, as
         ``rrht_normals`` and ``CGAL::rrht_estimate_normals()``, whatever the
         number of threads.
-    least_squares_first : bool, optional
-        Least squares first (beyond the paper), true by default, false with
-        the paper's settings: a quadric is fitted by least squares to the
-        neighbors of each point, as jet fitting does, and its normal kept
-        where the neighborhood is one smooth sheet within the noise around
-        the point (or, where it holds the two sides of a thin part, the
-        quadric of the point's own side); the Hough transform runs at the
-        other points, as along sharp features. See the user manual.
-    adaptive : bool, optional
-        The adaptive setting (beyond the paper), true by default, false with
-        the paper's settings: the Hough transform at a point is run
-        with the fast setting (at most 300 planes, 2 rotations), and where
-        that normal's confidence is below 0.09 again with ``planes`` and
-        ``rotations``; where it is below 0.045, as along sharp features,
-        drawing spatially ("cubes", or "unif" if ``sampling`` is "unif"),
-        unless those votes agree less than the cheap ones and less than
-        those drawn among the points. On noisy CAD shapes: fewer wrong
-        normals than the paper's precise setting in less than half its time.
-        ``sampling`` is otherwise ignored.
     refit : bool, default False
         Refit each normal by least squares (beyond the paper): a quadric
         height field over its plane, fitted to the neighbors within 2.5
@@ -232,7 +214,8 @@ def estimate_normals(
         of the neighbors lie outside that band, as on smooth surfaces, and
         two parallel planes where the neighborhood is the two sides of a
         thin part, but not near sharp features. The noise deviation is
-        estimated from the point's neighbors. Costs a second pass.
+        estimated from the point's neighbors. With any setting; costs a
+        second pass.
     threads : int, optional
         The number of threads for this call, 1 to 1024; default: all cores.
     progress : bool, default False
@@ -269,15 +252,15 @@ def estimate_normals(
         Only with ``return_confidence``: from 0 to 1, the share of all the
         planes drawn at the point, over the rotated accumulators, that voted
         for a most voted bin within ``cluster_angle`` of the returned normal;
-        with ``least_squares_first`` (the default), where the normal is kept
+        with the default setting, where the normal is kept
         without a vote, the share of 50 of its triples whose planes lie
         within twice a bin's solid angle of it. It drops near sharp features and where the normal is wrong, so a low
         value flags a normal to distrust; noise lowers it evenly over a
         cloud, so compare values within a cloud. 0 where the normal is zero.
     support : numpy.ndarray, shape (N,), float64
         Only with ``return_support``: the radius of the ball that holds
-        every point the normal depends on. With ``least_squares_first`` (the
-        default), whose tests read the neighborhoods of the point's
+        every point the normal depends on. With the default setting, whose
+        tests read the neighborhoods of the point's
         neighbors and of theirs, the largest distance to one of those
         points plus the radius of its neighborhood; with the paper's settings,
         the distance to the ``k``-th neighbor (or ``radius``), and with
@@ -310,6 +293,13 @@ def estimate_normals(
         Also return the support radius of each normal: the radius of the
         ball around the point that holds every point its normal depends on
         (the named parameter ``support_radius_map`` of the C++ function).
+    least_squares_first : bool, optional
+        Deprecated, replaced by ``setting``, kept for one release with a
+        ``DeprecationWarning``: the least squares of the default setting,
+        on or off whatever the setting.
+    adaptive : bool, optional
+        Deprecated as ``least_squares_first``: the adaptive Hough transform
+        of the default setting, on or off whatever the setting.
     neighbors : array_like, optional
         The deprecated name of ``halo`` (``--neighbors`` is ``k`` on the
         command line), kept for one release with a ``DeprecationWarning``.
@@ -370,8 +360,8 @@ def estimate_normals(
         aggregation=str(aggregation),
         cluster_angle=float(cluster_angle),
         seed=seed,
-        least_squares_first=_from_setting(least_squares_first, setting),
-        adaptive=_from_setting(adaptive, setting),
+        least_squares_first=_from_setting(_deprecated("least_squares_first", least_squares_first), setting),
+        adaptive=_from_setting(_deprecated("adaptive", adaptive), setting),
         refit=bool(refit),
         threads=threads,
         return_confidence=bool(return_confidence),
@@ -436,8 +426,8 @@ def orient_normals(
     closed surface), and flipped where it lies inside an odd number of
     others (the walls of a cavity point into it). Separate objects are each
     oriented so; an open surface ends up oriented to one side, which one
-    being the cloud's choice. The user manual (section "Orienting the
-    normals") says more, and what it cannot do.
+    being the cloud's choice. The user manual (section "Orienting and
+    reconstructing") says more, and what it cannot do.
 
     Parameters
     ----------
@@ -570,6 +560,13 @@ def _renamed(old: Tuple[str, Any], new: Tuple[str, Any]) -> Any:
     warnings.warn(f"{old[0]}= is deprecated: it is now {new[0]}= ({old[0]} is k on the command line)",
                   DeprecationWarning, stacklevel=3)
     return old[1]
+
+
+def _deprecated(name: str, value: Optional[bool]) -> Optional[bool]:
+    """``value``, with a DeprecationWarning if given: ``setting`` replaces the switch ``name``."""
+    if value is not None:
+        warnings.warn(f"{name}= is deprecated and will be removed: use setting=", DeprecationWarning, stacklevel=3)
+    return value
 
 
 def _estimation_orientation(orient: object, viewpoint: object, count: int, threads: Optional[int],

@@ -4,6 +4,7 @@ from typing import Callable, List, Optional, Tuple
 import numpy as np
 import numpy.typing as npt
 
+SETTINGS: Tuple[str, ...]
 SAMPLINGS: Tuple[str, ...]
 AGGREGATIONS: Tuple[str, ...]
 

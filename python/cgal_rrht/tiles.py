@@ -120,7 +120,7 @@ def run(input: "os.PathLike[str] | str", output: "os.PathLike[str] | str", *, sc
     halo : float, optional
         The first margin loaded around each tile; default: three times the
         neighborhood radius that the density of the tiles suggests (five
-        with ``least_squares_first``, the default, or ``refit``). Too small costs time, never accuracy: the points it
+        with the default setting or ``refit``). Too small costs time, never accuracy: the points it
         fails are estimated again. The halo's points are only neighbors:
         they cost their reading and their place in the kd-tree.
     progress : bool, default True
@@ -132,7 +132,7 @@ def run(input: "os.PathLike[str] | str", output: "os.PathLike[str] | str", *, sc
         aerial LiDAR), as ``estimate_normals(orient=...)``; default: not
         oriented. ``"consistent"`` is refused, before anything runs: a tile
         sees only its part of the cloud, and the sign of each tile would be
-        chosen on its own (see the user manual, "From Python").
+        chosen on its own (see the user manual, "Surveys and LAS").
     viewpoint : sequence of 3 numbers, or of 3 names, optional
         Orient the normals towards this point (a scanner's position), as
         ``estimate_normals(viewpoint=...)``, or, given the names of three
@@ -440,11 +440,12 @@ def _parser() -> argparse.ArgumentParser:
     estimator.add_argument("--aggregation", choices=AGGREGATIONS, default="cluster")
     estimator.add_argument("--cluster-angle", type=float, default=45.0, help="a_cluster in degrees (default 45)")
     estimator.add_argument("--no-confidence-interval", action="store_true", help="do not stop early (eq. 10)")
-    estimator.add_argument("--adaptive", action="store_const", const=True,
-                           help="with a paper setting, the adaptive setting (part of the default)")
-    estimator.add_argument("--least-squares-first", action="store_const", const=True,
-                           help="with a paper setting, least squares first (part of the default)")
     estimator.add_argument("--refit", action="store_true", help="refit each normal by least squares")
+    deprecated = parser.add_argument_group("deprecated options, replaced by --setting")
+    deprecated.add_argument("--adaptive", action="store_const", const=True,
+                            help="with a paper setting, its adaptive Hough transform without least squares")
+    deprecated.add_argument("--least-squares-first", action="store_const", const=True,
+                            help="with a paper setting, its least squares first")
     estimator.add_argument("--seed", type=int, default=0, help="random seed (default 0)")
     return parser
 
@@ -483,6 +484,9 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
             print(f"{len(written)} tiles in {args.folder}")
             return 0
         args = _parser().parse_args(argv)
+        for flag, given in (("--adaptive", args.adaptive), ("--least-squares-first", args.least_squares_first)):
+            if given:
+                print(f"warning: {flag} is deprecated and will be removed: use --setting", file=sys.stderr)
         orientation = dict([args.orient]) if args.orient else {}
         summary = run(args.input, args.output, scheduler=args.scheduler, workers=args.workers, threads=args.threads,
                       tile_size=args.tile_size, halo=args.halo, progress=not args.quiet,

@@ -147,7 +147,7 @@ auto from_name(const std::string& name, const Table& names, const char* what)
   throw py::value_error("unknown " + std::string(what) + " '" + name + "': use one of " + valid);
 }
 
-/// The names of a name table, as a tuple (cgal_rrht.SAMPLINGS, AGGREGATIONS).
+/// The names of a name table, as a tuple (cgal_rrht.SETTINGS, SAMPLINGS, AGGREGATIONS).
 template <typename Table>
 py::tuple names_of(const Table& names)
 {
@@ -471,6 +471,7 @@ PYBIND11_MODULE(_core, m)
 {
   m.doc() = "CGAL::rrht_estimate_normals() and CGAL::rrht_orient_normals() on NumPy arrays; use "
             "cgal_rrht.estimate_normals() and cgal_rrht.orient_normals().";
+  m.attr("SETTINGS") = names_of(CGAL::RRHT::setting_names);
   m.attr("SAMPLINGS") = names_of(CGAL::RRHT::sampling_names);
   m.attr("AGGREGATIONS") = names_of(CGAL::RRHT::aggregation_names);
   m.def(

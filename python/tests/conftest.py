@@ -11,6 +11,8 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
 DATA = ROOT / "examples" / "data"
+#: Marks a test of the switches that ``setting=`` replaces, which warn for one release.
+DEPRECATED = pytest.mark.filterwarnings("ignore:.* is deprecated and will be removed:DeprecationWarning")
 
 
 def angle_errors_deg(normals, truth):

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import cgal_rrht
-from conftest import DATA
+from conftest import DATA, DEPRECATED
 
 # (Python keyword arguments, the same for rrht_normals)
 SETTINGS = [
@@ -25,13 +25,20 @@ SETTINGS = [
      ["--setting", "paper_precise", "--radius", "0.05", "-k", "30", "--aggregation", "best", "--slices", "12"]),
     (dict(k=18, confidence_interval=False, cluster_angle=30.0, threads=1),
      ["-k", "18", "--no-confidence-interval", "--cluster-angle", "30", "--threads", "1"]),
-    (dict(setting="paper_precise", adaptive=True), ["--setting", "paper_precise", "--adaptive"]),
-    (dict(setting="paper_precise", adaptive=True, k=50, rotations=3, sampling="unif"),
-     ["--setting", "paper_precise", "--adaptive", "-k", "50", "--rotations", "3", "--sampling", "unif"]),
-    (dict(setting="paper_precise", least_squares_first=True), ["--setting", "paper_precise", "--least-squares-first"]),
     (dict(refit=True), ["--refit"]),
-    (dict(setting="paper_precise", refit=True, adaptive=True, radius=0.05, k=30),
-     ["--setting", "paper_precise", "--refit", "--adaptive", "--radius", "0.05", "-k", "30"]),
+    (dict(setting="paper_fast", refit=True, radius=0.05, k=30),
+     ["--setting", "paper_fast", "--refit", "--radius", "0.05", "-k", "30"]),
+    # The deprecated switches, whose combinations no setting gives.
+    pytest.param(dict(setting="paper_precise", adaptive=True), ["--setting", "paper_precise", "--adaptive"],
+                 marks=DEPRECATED),
+    pytest.param(dict(setting="paper_precise", adaptive=True, k=50, rotations=3, sampling="unif"),
+                 ["--setting", "paper_precise", "--adaptive", "-k", "50", "--rotations", "3", "--sampling", "unif"],
+                 marks=DEPRECATED),
+    pytest.param(dict(setting="paper_precise", least_squares_first=True),
+                 ["--setting", "paper_precise", "--least-squares-first"], marks=DEPRECATED),
+    pytest.param(dict(setting="paper_precise", refit=True, adaptive=True, radius=0.05, k=30),
+                 ["--setting", "paper_precise", "--refit", "--adaptive", "--radius", "0.05", "-k", "30"],
+                 marks=DEPRECATED),
 ]
 
 
@@ -45,6 +52,17 @@ def test_same_normals_as_the_cli(cli, tmp_path, parameters, flags):
     points = np.loadtxt(source)
     assert np.array_equal(written[:, :3], points)
     assert np.array_equal(cgal_rrht.estimate_normals(points, **parameters), written[:, 3:])
+
+
+def test_deprecated_switches_warn(cli, tmp_path):
+    """--adaptive and --least-squares-first, which --setting replaces, say so on stderr and still work."""
+    source = DATA / "fandisk_20k.xyz"
+    run = subprocess.run([cli, str(source), str(tmp_path / "normals.xyz"), "-q", "--setting", "paper_fast",
+                          "--adaptive", "--least-squares-first"], check=True, capture_output=True, text=True)
+    for flag in ("--adaptive", "--least-squares-first"):
+        assert f"warning: {flag} is deprecated and will be removed: use --setting" in run.stderr
+    assert "deprecated" not in subprocess.run([cli, str(source), str(tmp_path / "normals.xyz"), "-q"], check=True,
+                                              capture_output=True, text=True).stderr
 
 
 @pytest.mark.parametrize("extension", [".xyz", ".ply"])

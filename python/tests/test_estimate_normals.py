@@ -10,7 +10,7 @@ import pytest
 import open3d as o3d
 
 import cgal_rrht
-from conftest import angle_errors_deg, assert_documented, noisy_cube
+from conftest import DEPRECATED, angle_errors_deg, assert_documented, noisy_cube
 
 
 def test_noisy_cube_is_sharper_than_open3d():
@@ -133,12 +133,11 @@ def test_same_seed_same_normals_whatever_the_threads(fandisk):
 
 
 def test_settings_are_their_parameters(fandisk):
-    """A setting gives the defaults of four parameters; a parameter given wins."""
+    """A setting gives the defaults of planes and rotations; a value given wins."""
     points = fandisk[0][:5000]
     default = cgal_rrht.estimate_normals(points, k=40)
-    assert np.array_equal(default, cgal_rrht.estimate_normals(points, k=40, least_squares_first=True, adaptive=True))
+    assert np.array_equal(default, cgal_rrht.estimate_normals(points, k=40, setting="default"))
     precise = cgal_rrht.estimate_normals(points, k=40, setting="paper_precise")
-    assert np.array_equal(precise, cgal_rrht.estimate_normals(points, k=40, least_squares_first=False, adaptive=False))
     assert not np.array_equal(precise, default)
     fast = cgal_rrht.estimate_normals(points, k=40, setting="paper_fast")
     assert np.array_equal(fast, cgal_rrht.estimate_normals(points, k=40, setting="paper_precise", planes=300,
@@ -146,8 +145,20 @@ def test_settings_are_their_parameters(fandisk):
     assert not np.array_equal(fast, precise)
     assert np.array_equal(precise, cgal_rrht.estimate_normals(points, k=40, setting="paper_fast", planes=691,
                                                               rotations=5))
-    assert np.array_equal(default, cgal_rrht.estimate_normals(points, k=40, setting="paper_precise",
-                                                              least_squares_first=True, adaptive=True))
+    with pytest.raises(ValueError, match="unknown setting 'paper'"):
+        cgal_rrht.estimate_normals(points, setting="paper")
+
+
+def test_deprecated_switches_still_work_with_a_warning(fandisk):
+    """least_squares_first= and adaptive=, which setting= replaces, win over the setting for one release."""
+    points = fandisk[0][:5000]
+    with pytest.warns(DeprecationWarning, match="least_squares_first= is deprecated and will be removed: use setting="):
+        precise = cgal_rrht.estimate_normals(points, k=40, least_squares_first=False, adaptive=False)
+    assert np.array_equal(precise, cgal_rrht.estimate_normals(points, k=40, setting="paper_precise"))
+    with pytest.warns(DeprecationWarning, match="adaptive= is deprecated"):
+        default = cgal_rrht.estimate_normals(points, k=40, setting="paper_precise", least_squares_first=True,
+                                             adaptive=True)
+    assert np.array_equal(default, cgal_rrht.estimate_normals(points, k=40))
 
 
 @pytest.mark.parametrize(
@@ -159,11 +170,13 @@ def test_settings_are_their_parameters(fandisk):
         dict(setting="paper_precise", radius=0.05, k=30, aggregation="best", slices=12),
         dict(setting="paper_precise", confidence_interval=False, planes=200, presampling=2, cluster_angle=30.0),
         dict(setting="paper_precise"),
-        dict(setting="paper_precise", adaptive=True),
-        dict(setting="paper_precise", least_squares_first=True),
-        dict(adaptive=False),
-        dict(least_squares_first=False),
         dict(refit=True),
+        dict(setting="paper_fast", refit=True),
+        # The deprecated switches' combinations, which no setting gives.
+        pytest.param(dict(setting="paper_precise", adaptive=True), marks=DEPRECATED),
+        pytest.param(dict(setting="paper_precise", least_squares_first=True), marks=DEPRECATED),
+        pytest.param(dict(adaptive=False), marks=DEPRECATED),
+        pytest.param(dict(least_squares_first=False), marks=DEPRECATED),
     ],
 )
 def test_every_parameter_reaches_the_estimation(fandisk, parameters):

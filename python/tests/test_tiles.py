@@ -310,17 +310,19 @@ def test_command_line(cli_env, tmp_path):
     assert done.returncode == 0, done.stderr
     assert int(done.stdout.split()[0]) >= 16, done.stdout  # 16, and slivers that the noise puts past the borders
     done = subprocess.run(command + [str(tmp_path / "tiles"), str(tmp_path / "out"), "--workers", "2", "-q",
-                                     "-k", "30", "--setting", "paper_precise", "--least-squares-first", "--planes",
-                                     "300", "--seed", "4"],
+                                     "-k", "30", "--setting", "paper_fast", "--planes", "500", "--seed", "4"],
                           capture_output=True, text=True, env=cli_env)
     assert done.returncode == 0, done.stderr
     assert done.stderr == "" and done.stdout == ""  # -q: a successful run says nothing
-    expected = cgal_rrht.estimate_normals(points, k=30, setting="paper_precise", least_squares_first=True, planes=300,
-                                          seed=4)
+    expected = cgal_rrht.estimate_normals(points, k=30, setting="paper_fast", planes=500, seed=4)
     assert np.array_equal(read_normals(tmp_path / "out", len(points)), expected)
     (tmp_path / "tiles" / "tile_0_0.ply").write_text("broken\n")
     done = subprocess.run(command + [str(tmp_path / "tiles"), str(tmp_path / "out2"), "--workers", "1", "-q"],
                           capture_output=True, text=True, env=cli_env)
     assert done.returncode == 1
     assert "tile_0_0.ply: not a PLY file" in done.stderr
+    # The switches that --setting replaces still parse, with a warning.
+    done = subprocess.run(command + [str(tmp_path / "none"), str(tmp_path / "out3"), "--least-squares-first"],
+                          capture_output=True, text=True, env=cli_env)
+    assert "warning: --least-squares-first is deprecated and will be removed: use --setting" in done.stderr
     assert not (tmp_path / "out2").exists() or not any((tmp_path / "out2").iterdir())

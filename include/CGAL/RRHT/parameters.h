@@ -6,6 +6,8 @@
 #ifndef CGAL_RRHT_PARAMETERS_H
 #define CGAL_RRHT_PARAMETERS_H
 
+#include <CGAL/RRHT/Setting.h>
+
 #include <CGAL/Named_function_parameters.h>
 
 #include <cstddef>
@@ -30,9 +32,8 @@ namespace internal_np {
   X(aggregation_t, aggregation)                                \
   X(cluster_angle_t, cluster_angle)                            \
   X(confidence_map_t, confidence_map)                          \
-  X(adaptive_t, adaptive)                                      \
+  X(setting_t, setting)                                        \
   X(refit_t, refit)                                            \
-  X(least_squares_first_t, least_squares_first)                \
   X(point_id_map_t, point_id_map)                              \
   X(support_radius_map_t, support_radius_map)                  \
   X(neighbor_only_map_t, neighbor_only_map)                    \
@@ -40,8 +41,16 @@ namespace internal_np {
   X(viewpoint_t, viewpoint)                                    \
   X(viewpoint_map_t, viewpoint_map)
 
+// The switches that `setting` replaces, kept for one release: their tags
+// stay, so that the estimation reads them, and their chain functions go
+// with CGAL_NO_DEPRECATED_CODE.
+#define CGAL_RRHT_DEPRECATED_NAMED_PARAMETERS(X)               \
+  X(least_squares_first_t, least_squares_first)                \
+  X(adaptive_t, adaptive)
+
 #define CGAL_RRHT_DECLARE_TAG(TAG, NAME) enum TAG { NAME };
 CGAL_RRHT_NAMED_PARAMETERS(CGAL_RRHT_DECLARE_TAG)
+CGAL_RRHT_DEPRECATED_NAMED_PARAMETERS(CGAL_RRHT_DECLARE_TAG)
 #undef CGAL_RRHT_DECLARE_TAG
 } // namespace internal_np
 /// \endcond
@@ -64,10 +73,12 @@ CGAL_RRHT_NAMED_PARAMETERS(CGAL_RRHT_DECLARE_TAG)
 /// - one per named parameter of RRHT: `number_of_planes()`,
 ///   `accumulator_slices()`, `number_of_rotations()`,
 ///   `use_confidence_interval()`, `sampling()`, `presampling_factor()`,
-///   `aggregation()`, `cluster_angle()`, `confidence_map()`, `adaptive()`, `refit()`,
-///   `least_squares_first()`, `point_id_map()`, `support_radius_map()` and `neighbor_only_map()`, and
+///   `aggregation()`, `cluster_angle()`, `confidence_map()`, `setting()`, `refit()`,
+///   `point_id_map()`, `support_radius_map()` and `neighbor_only_map()`, and
 ///   those of `CGAL::rrht_orient_normals()`: `direction()`, `viewpoint()` and
-///   `viewpoint_map()`.
+///   `viewpoint_map()`;
+/// - the deprecated `least_squares_first()` and `adaptive()`, which `setting()`
+///   replaces (not with `CGAL_NO_DEPRECATED_CODE`).
 ///
 /// The parameters that `CGAL::rrht_estimate_normals()` reads, their types
 /// and their defaults are listed in its documentation.
@@ -149,6 +160,9 @@ struct Named_function_parameters
     return Named_function_parameters<K, internal_np::TAG, self>(k, *this);      \
   }
   CGAL_RRHT_NAMED_PARAMETERS(CGAL_RRHT_MEMBER)
+#ifndef CGAL_NO_DEPRECATED_CODE
+  CGAL_RRHT_DEPRECATED_NAMED_PARAMETERS(CGAL_RRHT_MEMBER)
+#endif
 #undef CGAL_RRHT_MEMBER
 };
 
@@ -159,7 +173,7 @@ struct Named_function_parameters
 /// params::point_map(pm).normal_map(nm).number_of_planes(300).sampling(CGAL::RRHT::Sampling::CUBES)
 /// params::sampling(CGAL::RRHT::Sampling::CUBES).neighbor_radius(0.1).normal_map(nm)
 /// params::extend(np).number_of_rotations(2)   // np: any CGAL named-parameter chain
-/// params::paper_fast().point_map(pm).normal_map(nm)   // the paper's fast setting
+/// params::setting(CGAL::RRHT::Setting::PAPER_FAST).point_map(pm).normal_map(nm)   // the paper's fast setting
 /// \endcode
 ///
 /// Each of these functions is named after a named parameter, takes its value
@@ -168,12 +182,10 @@ struct Named_function_parameters
 /// `neighbor_radius()`, ...) and one per named parameter of RRHT
 /// (`number_of_planes()`, `accumulator_slices()`, `number_of_rotations()`,
 /// `use_confidence_interval()`, `sampling()`, `presampling_factor()`,
-/// `aggregation()`, `cluster_angle()`, `confidence_map()`, `adaptive()`, `refit()`,
-/// `least_squares_first()`, `point_id_map()`, `support_radius_map()`, `neighbor_only_map()`,
-/// `direction()`, `viewpoint()`, `viewpoint_map()`).
-///
-/// Two more start a chain with the paper's settings: `paper_precise()` and
-/// `paper_fast()`.
+/// `aggregation()`, `cluster_angle()`, `confidence_map()`, `setting()`, `refit()`,
+/// `point_id_map()`, `support_radius_map()`, `neighbor_only_map()`,
+/// `direction()`, `viewpoint()`, `viewpoint_map()`), and the deprecated
+/// `least_squares_first()`, `adaptive()`, `paper_precise()` and `paper_fast()`.
 /// \ingroup PkgRRHTRef
 namespace parameters {
 
@@ -217,37 +229,28 @@ inline Default_named_parameters default_values() { return Default_named_paramete
     return RRHT::Named_function_parameters<K, RRHT::internal_np::TAG>(p);       \
   }
 CGAL_RRHT_NAMED_PARAMETERS(CGAL_RRHT_FREE_FUNCTION)
+#ifndef CGAL_NO_DEPRECATED_CODE
+CGAL_RRHT_DEPRECATED_NAMED_PARAMETERS(CGAL_RRHT_FREE_FUNCTION)
+#endif
 #undef CGAL_RRHT_FREE_FUNCTION
 #undef CGAL_RRHT_NAMED_PARAMETERS
+#undef CGAL_RRHT_DEPRECATED_NAMED_PARAMETERS
 
+#ifndef CGAL_NO_DEPRECATED_CODE
 /// \cond SKIP_IN_MANUAL
-typedef RRHT::Named_function_parameters<bool, RRHT::internal_np::adaptive_t,
-                                        RRHT::Named_function_parameters<bool, RRHT::internal_np::least_squares_first_t> >
-  Paper_precise_parameters;
-typedef RRHT::Named_function_parameters<
-  unsigned int, RRHT::internal_np::number_of_rotations_t,
-  RRHT::Named_function_parameters<std::size_t, RRHT::internal_np::number_of_planes_t, Paper_precise_parameters> >
-  Paper_fast_parameters;
+typedef RRHT::Named_function_parameters<Setting, RRHT::internal_np::setting_t> Setting_parameters;
 /// \endcond
 
-/// The paper's precise setting (Section 6: T_R from eq. 7, 691 for 15 slices,
-/// and n_rot = 5, with `CGAL::RRHT::Sampling::POINTS` and
-/// `CGAL::RRHT::Aggregation::CLUSTER`): the Hough transform at every point,
-/// without the least-squares fit or the adaptive setting that
-/// `CGAL::rrht_estimate_normals()` runs by default. A chain to go on with any
-/// parameter, e.g. `paper_precise().sampling(CGAL::RRHT::Sampling::CUBES)`
-/// for RRHT_Cubes; a parameter appended later wins.
-/// \return a chain that holds `least_squares_first(false)` and `adaptive(false)`
-inline Paper_precise_parameters paper_precise() { return least_squares_first(false).adaptive(false); }
+/// \deprecated Use `setting(CGAL::RRHT::Setting::PAPER_PRECISE)`, which this returns.
+/// \return a chain that holds the paper's precise setting
+CGAL_DEPRECATED_MSG("use setting(CGAL::RRHT::Setting::PAPER_PRECISE)")
+inline Setting_parameters paper_precise() { return setting(Setting::PAPER_PRECISE); }
 
-/// The paper's fast setting (Section 6: T_R = 300 and n_rot = 2), otherwise
-/// as `paper_precise()`.
-/// \return a chain that holds those of `paper_precise()`, `number_of_planes(300)`
-///         and `number_of_rotations(2)`
-inline Paper_fast_parameters paper_fast()
-{
-  return paper_precise().number_of_planes(std::size_t(300)).number_of_rotations(2u);
-}
+/// \deprecated Use `setting(CGAL::RRHT::Setting::PAPER_FAST)`, which this returns.
+/// \return a chain that holds the paper's fast setting
+CGAL_DEPRECATED_MSG("use setting(CGAL::RRHT::Setting::PAPER_FAST)")
+inline Setting_parameters paper_fast() { return setting(Setting::PAPER_FAST); }
+#endif
 
 /// \cond SKIP_IN_MANUAL
 namespace internal {

@@ -16,6 +16,11 @@ namespace CGAL {
 namespace RRHT {
 namespace internal {
 
+/// T_R and n_rot of the paper's fast setting (Section 6), which the
+/// adaptive setting runs first.
+constexpr std::size_t paper_fast_number_of_planes = 300;
+constexpr unsigned int paper_fast_number_of_rotations = 2;
+
 /// The parameters of the algorithm (paper, Section 6), once checked.
 struct Settings
 {

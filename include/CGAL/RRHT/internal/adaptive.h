@@ -47,8 +47,8 @@ struct Adaptive_stages
 
   explicit Adaptive_stages(const Settings& settings) : cheap(settings), precise(settings), spatial(settings)
   {
-    cheap.number_of_planes = (std::min)(settings.number_of_planes, std::size_t(300));
-    cheap.number_of_rotations = (std::min)(settings.number_of_rotations, 2u);
+    cheap.number_of_planes = (std::min)(settings.number_of_planes, paper_fast_number_of_planes);
+    cheap.number_of_rotations = (std::min)(settings.number_of_rotations, paper_fast_number_of_rotations);
     cheap.sampling = Sampling::POINTS;
     precise.sampling = Sampling::POINTS;
     spatial.sampling = (settings.sampling == Sampling::UNIF) ? Sampling::UNIF : Sampling::CUBES;

@@ -45,7 +45,7 @@ namespace RRHT {
 namespace internal {
 
 /// The tests of the least-squares-first estimation, chosen on the
-/// benchmark's clouds (the user manual, "Least squares first").
+/// benchmark's clouds (the design notes, "Beyond the paper, in detail").
 struct Least_squares_first_thresholds
 {
   /// The first quartile of the noise deviations estimated at the n

@@ -10,6 +10,7 @@
 
 #include <CGAL/RRHT/Aggregation.h>
 #include <CGAL/RRHT/Sampling.h>
+#include <CGAL/RRHT/Setting.h>
 #include <CGAL/RRHT/hoeffding_number_of_planes.h>
 #include <CGAL/RRHT/parameters.h>
 
@@ -56,6 +57,10 @@ Parameters read_parameters(const PointRange& points, unsigned int k, const Named
   const double neighbor_radius = CGAL::to_double(choose_parameter(get_parameter(np, CGAL::internal_np::neighbor_radius), FT(0)));
   check(std::isfinite(neighbor_radius) && neighbor_radius >= 0, "neighbor_radius must be finite and non-negative");
   check(k > 0 || neighbor_radius > 0, "k must be at least 1 when no neighbor_radius is given");
+  const Setting setting = choose_parameter(get_parameter(np, rrht_np::setting), Setting::DEFAULT);
+  check(setting == Setting::DEFAULT || setting == Setting::PAPER_PRECISE || setting == Setting::PAPER_FAST,
+        "unknown setting");
+  const bool paper = setting != Setting::DEFAULT, fast = setting == Setting::PAPER_FAST;
   p.accumulator_slices = count_in_range<unsigned int>(
     choose_parameter(get_parameter(np, rrht_np::accumulator_slices), 15u), 1, 1000, "accumulator_slices (n_phi)");
 
@@ -63,7 +68,7 @@ Parameters read_parameters(const PointRange& points, unsigned int k, const Named
   settings.neighbor_radius = neighbor_radius;
   settings.number_of_planes = count_in_range<std::size_t>(
     choose_parameter(get_parameter(np, rrht_np::number_of_planes),
-                     hoeffding_number_of_planes(Bin_layout(p.accumulator_slices).size())),
+                     fast ? paper_fast_number_of_planes : hoeffding_number_of_planes(Bin_layout(p.accumulator_slices).size())),
     1, 100000000, "number_of_planes (T_R)");
   settings.use_confidence_interval = choose_parameter(get_parameter(np, rrht_np::use_confidence_interval), true);
   settings.sampling = choose_parameter(get_parameter(np, rrht_np::sampling), Sampling::POINTS);
@@ -72,7 +77,7 @@ Parameters read_parameters(const PointRange& points, unsigned int k, const Named
   settings.presampling_factor = count_in_range<unsigned int>(
     choose_parameter(get_parameter(np, rrht_np::presampling_factor), 4u), 1, 32, "presampling_factor (c)");
   settings.number_of_rotations = count_in_range<unsigned int>(
-    choose_parameter(get_parameter(np, rrht_np::number_of_rotations), 5u), 1, 100000, "number_of_rotations (n_rot)");
+    choose_parameter(get_parameter(np, rrht_np::number_of_rotations), fast ? paper_fast_number_of_rotations : 5u), 1, 100000, "number_of_rotations (n_rot)");
   settings.aggregation = choose_parameter(get_parameter(np, rrht_np::aggregation), Aggregation::CLUSTER);
   check(settings.aggregation == Aggregation::MEAN || settings.aggregation == Aggregation::BEST ||
         settings.aggregation == Aggregation::CLUSTER, "unknown aggregation");
@@ -80,9 +85,10 @@ Parameters read_parameters(const PointRange& points, unsigned int k, const Named
   check(cluster_angle >= 0 && cluster_angle <= 180, "cluster_angle must be from 0 to 180 degrees");
   settings.cos_cluster_angle = std::cos(cluster_angle * CGAL_PI / 180.);
   settings.seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u);
-  p.adaptive = choose_parameter(get_parameter(np, rrht_np::adaptive), true);
+  // The deprecated switches, where given, win over the setting.
+  p.least_squares_first = choose_parameter(get_parameter(np, rrht_np::least_squares_first), !paper);
+  p.adaptive = choose_parameter(get_parameter(np, rrht_np::adaptive), !paper);
   p.refit = choose_parameter(get_parameter(np, rrht_np::refit), false);
-  p.least_squares_first = choose_parameter(get_parameter(np, rrht_np::least_squares_first), true);
   check(std::size_t(std::distance(points.begin(), points.end())) <= Neighbor_search::max_size(),
         "at most 2^32 - 1 points at once: process larger clouds in tiles");
   return p;

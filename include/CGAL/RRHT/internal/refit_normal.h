@@ -31,7 +31,7 @@ namespace RRHT {
 namespace internal {
 
 /// The thresholds of the refit, chosen on the benchmark's sharp shapes,
-/// smooth clouds and thin parts (the user manual, "Beyond the paper").
+/// smooth clouds and thin parts (the design notes, "Beyond the paper, in detail").
 struct Refit_thresholds
 {
   /// Inliers lie within `band` noise deviations of the fitted surface.
