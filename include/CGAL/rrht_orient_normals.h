@@ -79,8 +79,14 @@ namespace CGAL {
    signs are relaxed by all its edges at once, as the signs of the
    least-squares values that make each pair agree as its edge says, lightly
    held to the joins' signs: a part that an early join on little evidence
-   turned over is turned back where its edges say so.
-   Clusters with no evidence between
+   turned over is turned back where its edges say so. Then the signs are
+   checked as a whole: the cloud falls into patches of smooth surface that
+   the signs orient as one (never across a sharp edge or the two sides of a
+   thin part), and a patch is turned back where the generalized winding
+   number of all the oriented points (Barill et al. 2018), away from the
+   surface, comes nearer those of a solid (0 outside, 1 inside) for it: a
+   whole face that the local evidence turned inward, which no local
+   evidence can see, is turned back. Clusters with no evidence between
    them, such as separate objects, are each oriented so. Only the lines of
    the given normals count: flipping any of them before the call changes
    nothing in the result. The user manual says why, and the benchmark

@@ -8,6 +8,7 @@
 
 #include <CGAL/RRHT/internal/Neighbor_search.h>
 #include <CGAL/RRHT/internal/Signed_agglomeration.h>
+#include <CGAL/RRHT/internal/global_signs.h>
 #include <CGAL/RRHT/internal/orientation_edges.h>
 #include <CGAL/RRHT/internal/outward_signs.h>
 #include <CGAL/RRHT/internal/relaxed_signs.h>
@@ -37,8 +38,10 @@ inline int canonical_sign(const Eigen::Vector3d& normal)
 /// of `search`) is to be multiplied: the signed edges of the graph of the
 /// `k` nearest neighbors (`orientation_edges()`) join the points into
 /// consistently oriented clusters (`signed_clusters()`), each cluster is
-/// turned out of the solid (`outward_signs()`), and the signs within each
-/// cluster are relaxed by all its edges at once (`relaxed_signs()`). The
+/// turned out of the solid (`outward_signs()`), the signs within each
+/// cluster are relaxed by all its edges at once (`relaxed_signs()`), and
+/// whole patches are turned back where the winding number of the whole
+/// cloud says so (`global_signs()`). The
 /// normals are first turned to a sense that depends on their lines only, so
 /// that the result does not depend on the senses given, to the last bit.
 template <typename ConcurrencyTag>
@@ -76,6 +79,7 @@ std::vector<int> consistent_orientation(const Neighbor_search& search, const std
     for(std::uint32_t v : members[c])
       signs[v] *= outward[c];
   signs = relaxed_signs(size, edges, cluster, std::move(signs));
+  signs = global_signs<ConcurrencyTag>(points, normals, areas, edges, std::move(signs));
   for(std::size_t v = 0; v < size; ++v)
     signs[v] *= canonical[v];
   return signs;

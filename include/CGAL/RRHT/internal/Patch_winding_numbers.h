@@ -1,0 +1,253 @@
+// Copyright (c) 2026 The CGAL RRHT authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The generalized winding number of oriented points (Barill et al. 2018),
+// each group of points' share apart, at query points away from the surface.
+
+#ifndef CGAL_RRHT_INTERNAL_PATCH_WINDING_NUMBERS_H
+#define CGAL_RRHT_INTERNAL_PATCH_WINDING_NUMBERS_H
+
+#include <CGAL/for_each.h>
+#include <CGAL/number_type_config.h>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <numeric>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace RRHT {
+namespace internal {
+
+/// The winding number at query points of a cloud of oriented points, each
+/// point `v` a dipole of moment `areas[v] * normals[v]` (the discrete form of
+/// the winding number's integral, Barill et al. 2018, Eq. 4), summed apart
+/// for each of `groups` groups of points (`group[v]`, `groups` for a point
+/// of none), and for the points of no group.
+///
+/// The cloud's bounding cube is cut into an octree of `2^depth` cells a
+/// side; each cell holds, for each group with points in it, the sum of their
+/// moments at their area-weighted centroid. A cell seen from a query within
+/// `opening` of its side over its distance is taken whole (Barnes and Hut
+/// 1986, the far-field expansion of Barill et al. to its first term),
+/// otherwise its children are; the finest cells are always taken whole,
+/// which is accurate where the query is a few cells from every point. The
+/// queries are the centers of the cells of half the finest resolution
+/// whose nearest point lies at least `clearance` finest cells away: the
+/// winding number is evaluated away from the surface, where a patch that is
+/// turned over changes it by its whole share, while a step either side of a
+/// point would see the patch's own share turn with it. Each query's sums
+/// are taken in the same order whatever the number of threads.
+class Patch_winding_numbers
+{
+public:
+  template <typename ConcurrencyTag>
+  Patch_winding_numbers(const std::vector<Eigen::Vector3d>& points, const std::vector<Eigen::Vector3d>& normals,
+                        const std::vector<double>& areas, const std::vector<std::uint32_t>& group, std::size_t groups,
+                        ConcurrencyTag)
+    : m_groups(groups)
+  {
+    if(!bound(points))
+      return;
+    build_levels(points, normals, areas, group);
+    place_queries(points);
+    m_shares.assign(m_queries.size() * (m_groups + 1), 0.f);
+    std::vector<std::size_t> queries(m_queries.size());
+    std::iota(queries.begin(), queries.end(), std::size_t(0));
+    CGAL::for_each<ConcurrencyTag>(queries, [&](std::size_t q) {
+      std::vector<double> sums(m_groups + 1, 0.);
+      add_shares(m_queries[q], 0, 0, sums);
+      for(std::size_t g = 0; g <= m_groups; ++g)
+        m_shares[g * m_queries.size() + q] = float(sums[g]);
+      return true;
+    });
+  }
+
+  /// The number of query points.
+  std::size_t size() const { return m_queries.size(); }
+
+  /// The query points.
+  const std::vector<Eigen::Vector3d>& queries() const { return m_queries; }
+
+  /// The share of group `g` (`groups` for the points of no group) in the
+  /// winding number at each query, in the order of `queries()`.
+  const float* shares(std::size_t g) const { return m_shares.data() + g * m_queries.size(); }
+  float* shares(std::size_t g) { return m_shares.data() + g * m_queries.size(); }
+
+private:
+  static constexpr unsigned int depth = 6;
+  static constexpr double opening = 0.5;
+  static constexpr int clearance = 3;
+
+  // The moments of one group's points in one cell.
+  struct Cell_group
+  {
+    std::uint32_t code; // Morton code of the cell at its level
+    std::uint32_t group;
+    Eigen::Vector3d moment, centroid;
+    double area;
+  };
+
+  bool bound(const std::vector<Eigen::Vector3d>& points)
+  {
+    if(points.empty())
+      return false;
+    Eigen::Vector3d lo = points[0], hi = points[0];
+    for(const Eigen::Vector3d& p : points)
+    {
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
+    m_side = (hi - lo).maxCoeff();
+    if(!(m_side > 0))
+      return false;
+    // A margin, so that the points of the largest coordinates fall inside.
+    m_side *= 1 + 1e-9;
+    m_corner = lo;
+    return true;
+  }
+
+  std::uint32_t cell_coordinate(double x, double lo) const
+  {
+    const double cells = double(1u << depth);
+    const double c = (x - lo) / m_side * cells;
+    return std::uint32_t((std::min)(cells - 1, (std::max)(0., std::floor(c))));
+  }
+
+  static std::uint32_t morton(std::uint32_t x, std::uint32_t y, std::uint32_t z)
+  {
+    std::uint32_t code = 0;
+    for(unsigned int bit = 0; bit < depth; ++bit)
+      code |= (((x >> bit) & 1u) << (3 * bit)) | (((y >> bit) & 1u) << (3 * bit + 1)) |
+              (((z >> bit) & 1u) << (3 * bit + 2));
+    return code;
+  }
+
+  // The finest cells' moments, from the points in a fixed order, then each
+  // coarser level from the one below.
+  void build_levels(const std::vector<Eigen::Vector3d>& points, const std::vector<Eigen::Vector3d>& normals,
+                    const std::vector<double>& areas, const std::vector<std::uint32_t>& group)
+  {
+    std::vector<std::pair<std::uint64_t, std::uint32_t> > keys(points.size());
+    for(std::size_t v = 0; v < points.size(); ++v)
+    {
+      const Eigen::Vector3d& p = points[v];
+      const std::uint32_t code = morton(cell_coordinate(p.x(), m_corner.x()), cell_coordinate(p.y(), m_corner.y()),
+                                        cell_coordinate(p.z(), m_corner.z()));
+      keys[v] = { (std::uint64_t(code) << 32) | (std::min<std::size_t>)(group[v], m_groups), std::uint32_t(v) };
+    }
+    std::sort(keys.begin(), keys.end());
+    m_levels.assign(depth + 1, std::vector<Cell_group>());
+    std::vector<Cell_group>& finest = m_levels[depth];
+    for(const auto& key : keys)
+    {
+      const std::uint32_t code = std::uint32_t(key.first >> 32), g = std::uint32_t(key.first & 0xffffffffu);
+      if(finest.empty() || finest.back().code != code || finest.back().group != g)
+        finest.push_back({ code, g, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), 0. });
+      const std::uint32_t v = key.second;
+      finest.back().moment += areas[v] * normals[v];
+      finest.back().centroid += areas[v] * points[v];
+      finest.back().area += areas[v];
+    }
+    for(Cell_group& c : finest)
+      c.centroid = c.area > 0 ? Eigen::Vector3d(c.centroid / c.area) : Eigen::Vector3d::Zero();
+    for(unsigned int level = depth; level > 0; --level)
+    {
+      std::vector<Cell_group> parents;
+      for(const Cell_group& c : m_levels[level])
+        parents.push_back({ c.code >> 3, c.group, c.moment, c.area * c.centroid, c.area });
+      std::stable_sort(parents.begin(), parents.end(), [](const Cell_group& x, const Cell_group& y) {
+        return x.code != y.code ? x.code < y.code : x.group < y.group;
+      });
+      std::vector<Cell_group>& merged = m_levels[level - 1];
+      for(const Cell_group& c : parents)
+        if(!merged.empty() && merged.back().code == c.code && merged.back().group == c.group)
+        {
+          merged.back().moment += c.moment;
+          merged.back().centroid += c.centroid;
+          merged.back().area += c.area;
+        }
+        else
+          merged.push_back(c);
+      for(Cell_group& c : merged)
+        c.centroid = c.area > 0 ? Eigen::Vector3d(c.centroid / c.area) : Eigen::Vector3d::Zero();
+    }
+  }
+
+  // The centers of the cells of half the finest resolution that no point
+  // comes within `clearance` finest cells of.
+  void place_queries(const std::vector<Eigen::Vector3d>& points)
+  {
+    const int cells = 1 << depth;
+    std::vector<char> occupied(std::size_t(cells) * cells * cells, 0);
+    for(const Eigen::Vector3d& p : points)
+      occupied[(std::size_t(cell_coordinate(p.z(), m_corner.z())) * cells + cell_coordinate(p.y(), m_corner.y())) *
+                 cells + cell_coordinate(p.x(), m_corner.x())] = 1;
+    const double finest_side = m_side / cells;
+    for(int z = 1; z < cells; z += 2)
+      for(int y = 1; y < cells; y += 2)
+        for(int x = 1; x < cells; x += 2)
+        {
+          // The query is the corner shared by the finest cells x - 1 and x
+          // along each axis.
+          bool clear = true;
+          for(int dz = -clearance; clear && dz < clearance; ++dz)
+            for(int dy = -clearance; clear && dy < clearance; ++dy)
+              for(int dx = -clearance; clear && dx < clearance; ++dx)
+              {
+                const int cx = x + dx, cy = y + dy, cz = z + dz;
+                if(cx >= 0 && cy >= 0 && cz >= 0 && cx < cells && cy < cells && cz < cells &&
+                   occupied[(std::size_t(cz) * cells + cy) * cells + cx])
+                  clear = false;
+              }
+          if(clear)
+            m_queries.push_back(m_corner + finest_side * Eigen::Vector3d(x, y, z));
+        }
+  }
+
+  // Adds the shares of the cell of `code` at `level` at query `q` to `sums`.
+  void add_shares(const Eigen::Vector3d& q, unsigned int level, std::uint32_t code, std::vector<double>& sums) const
+  {
+    const std::vector<Cell_group>& cells = m_levels[level];
+    auto first = std::lower_bound(cells.begin(), cells.end(), code,
+                                  [](const Cell_group& c, std::uint32_t value) { return c.code < value; });
+    if(first == cells.end() || first->code != code)
+      return;
+    const double side = m_side / double(1u << level);
+    Eigen::Vector3d center = m_corner;
+    for(unsigned int bit = 0; bit < level; ++bit)
+      center += side * Eigen::Vector3d(double((code >> (3 * bit)) & 1u), double((code >> (3 * bit + 1)) & 1u),
+                                       double((code >> (3 * bit + 2)) & 1u)) * double(1u << bit);
+    center += Eigen::Vector3d::Constant(side / 2);
+    if(level < depth && side > opening * (center - q).norm())
+    {
+      for(std::uint32_t child = 0; child < 8; ++child)
+        add_shares(q, level + 1, (code << 3) | child, sums);
+      return;
+    }
+    for(auto it = first; it != cells.end() && it->code == code; ++it)
+    {
+      const Eigen::Vector3d d = it->centroid - q;
+      const double r = d.norm();
+      if(r > 0)
+        sums[it->group] += it->moment.dot(d) / (4 * CGAL_PI * r * r * r);
+    }
+  }
+
+  std::size_t m_groups;
+  double m_side = 0;
+  Eigen::Vector3d m_corner = Eigen::Vector3d::Zero();
+  std::vector<std::vector<Cell_group> > m_levels; // by level, each sorted by code then group
+  std::vector<Eigen::Vector3d> m_queries;
+  std::vector<float> m_shares; // group-major: m_shares[g * size() + q]
+};
+
+} // namespace internal
+} // namespace RRHT
+} // namespace CGAL
+
+#endif // CGAL_RRHT_INTERNAL_PATCH_WINDING_NUMBERS_H

@@ -1,0 +1,378 @@
+// Copyright (c) 2026 The CGAL RRHT authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// A global check of the signs of a consistent orientation: whole patches
+// turned over where the winding number of the whole cloud says so.
+
+#ifndef CGAL_RRHT_INTERNAL_GLOBAL_SIGNS_H
+#define CGAL_RRHT_INTERNAL_GLOBAL_SIGNS_H
+
+#include <CGAL/RRHT/internal/Patch_winding_numbers.h>
+#include <CGAL/RRHT/internal/orientation_edges.h>
+#include <CGAL/RRHT/internal/sign_patches.h>
+
+#include <CGAL/for_each.h>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <numeric>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace RRHT {
+namespace internal {
+
+/// How far a winding number is from those of a solid, 0 outside and 1
+/// inside, beyond `tolerance`: the discrete sum over the points strays
+/// from 0 or 1 by up to a tenth near the surface (the points' areas are
+/// estimates), and a small patch turned over to cancel that is no evidence.
+constexpr double winding_tolerance = 0.1;
+
+inline double off_solid(double w)
+{
+  return (std::max)(0., (std::min)(std::abs(w), std::abs(w - 1)) - winding_tolerance);
+}
+
+/// The patches that `global_signs()` may turn over: the `most` largest of
+/// at least `least` points (largest first, then by number), each numbered
+/// from 0 in `unit`; the others get `units.size()`.
+struct Flip_units
+{
+  std::vector<std::uint32_t> patches; // the patch of each unit
+  std::vector<std::uint32_t> unit;    // the unit of each patch
+};
+
+inline Flip_units flip_units(const Sign_patches& patches, std::size_t least, std::size_t most)
+{
+  std::vector<std::size_t> size(patches.count, 0);
+  for(std::uint32_t p : patches.patch)
+    ++size[p];
+  Flip_units units;
+  for(std::size_t p = 0; p < patches.count; ++p)
+    if(size[p] >= least)
+      units.patches.push_back(std::uint32_t(p));
+  std::stable_sort(units.patches.begin(), units.patches.end(),
+                   [&](std::uint32_t x, std::uint32_t y) { return size[x] > size[y]; });
+  if(units.patches.size() > most)
+    units.patches.resize(most);
+  units.unit.assign(patches.count, std::uint32_t(units.patches.size()));
+  for(std::size_t u = 0; u < units.patches.size(); ++u)
+    units.unit[units.patches[u]] = std::uint32_t(u);
+  return units;
+}
+
+/// An edge between two units, or between a unit and a point of none (`b`
+/// the number of units), with its signed weight under the signs the units
+/// were made from.
+struct Unit_edge
+{
+  std::uint32_t a, b;
+  double weight;
+};
+
+/// The units of `field` (its groups) to turn over, greedily, each move
+/// one of `moves` (a list of units turned together: each unit alone, and
+/// the pieces of one smooth face), while a move gains at least `least_gain`
+/// of what it moves: the gain is how much nearer those of a solid the move
+/// brings the winding number (`off_solid()`, summed over the queries), and
+/// what it moves, twice the move's share beyond the tolerance, summed. A
+/// face turned inward leaves the winding number off those of a solid over
+/// the region it sees, and turning it back makes it whole; turning over a
+/// patch of an open surface, whose winding number is fractional anyway,
+/// gains little of what it moves. A curved face turned inward must turn
+/// back whole: turning back half of a bore leaves the winding number in it
+/// near 1, as whole as 0. Of the moves that gain enough, the one taken gains
+/// most, each gain weighed by how many of the move's edges to other units
+/// across sharp edges and thin parts (`edges`) it makes agree: turning both
+/// sides of a thin wall changes the winding number away from it by almost
+/// nothing, so that, where one side is turned inward, the winding number
+/// alone cannot tell which side to turn back, and the faces beside each side
+/// can. Ends when no move gains enough: each move lowers the sum. The sums
+/// are taken over the queries in order, the moves' gains apart (in
+/// parallel), the best move the first of equal ones.
+template <typename ConcurrencyTag>
+std::vector<char> units_to_turn(Patch_winding_numbers& field, std::size_t units,
+                                const std::vector<std::vector<std::uint32_t> >& moves,
+                                const std::vector<Unit_edge>& edges)
+{
+  const double least_gain = 0.25, least_moved = 1e-3, agreement_weight = 0.25;
+  const std::size_t queries = field.size();
+  std::vector<double> total(queries, 0.);
+  for(std::size_t g = 0; g <= units; ++g)
+    for(std::size_t q = 0; q < queries; ++q)
+      total[q] += field.shares(g)[q];
+  std::vector<char> turned(units + 1, 0);
+  std::vector<std::vector<char> > member(moves.size(), std::vector<char>(units + 1, 0));
+  for(std::size_t m = 0; m < moves.size(); ++m)
+    for(std::uint32_t u : moves[m])
+      member[m][u] = 1;
+  std::vector<double> moved(moves.size(), 0.), gain(moves.size(), 0.), agreement(moves.size(), 0.);
+  std::vector<std::size_t> numbers(moves.size());
+  std::iota(numbers.begin(), numbers.end(), std::size_t(0));
+  // The share of move `m` at query `q`.
+  auto share = [&](std::size_t m, std::size_t q) {
+    double sum = 0;
+    for(std::uint32_t u : moves[m])
+      sum += field.shares(u)[q];
+    return sum;
+  };
+  CGAL::for_each<ConcurrencyTag>(numbers, [&](std::size_t m) {
+    for(std::size_t q = 0; q < queries; ++q)
+      moved[m] += (std::max)(0., 2 * std::abs(share(m, q)) - winding_tolerance);
+    // How far the move's edges agree with the signs as they are, from -1
+    // (all against) to 1.
+    double evidence = 0, agree = 0;
+    for(const Unit_edge& e : edges)
+      if(member[m][e.a] != member[m][e.b])
+      {
+        evidence += std::abs(e.weight);
+        agree += (turned[e.a] != turned[e.b]) ? -e.weight : e.weight;
+      }
+    agreement[m] = evidence > 0 ? agree / evidence : 0.;
+    return true;
+  });
+  for(std::size_t turns = 0; turns < 2 * moves.size(); ++turns)
+  {
+    CGAL::for_each<ConcurrencyTag>(numbers, [&](std::size_t m) {
+      double g = 0;
+      for(std::size_t q = 0; q < queries; ++q)
+        g += off_solid(total[q]) - off_solid(total[q] - 2 * share(m, q));
+      gain[m] = g;
+      return true;
+    });
+    std::size_t best = moves.size();
+    double best_score = 0;
+    for(std::size_t m = 0; m < moves.size(); ++m)
+    {
+      const double score = gain[m] * (1 - agreement_weight * agreement[m]);
+      if(gain[m] > 0 && gain[m] >= least_gain * moved[m] && moved[m] >= least_moved * double(queries) &&
+         (best == moves.size() || score > best_score))
+      {
+        best = m;
+        best_score = score;
+      }
+    }
+    if(best == moves.size())
+      break;
+    for(std::uint32_t u : moves[best])
+    {
+      float* s = field.shares(u);
+      for(std::size_t q = 0; q < queries; ++q)
+      {
+        total[q] -= 2 * double(s[q]);
+        s[q] = -s[q];
+      }
+      turned[u] = char(!turned[u]);
+    }
+    // The agreement of the moves whose edges the turn changed.
+    CGAL::for_each<ConcurrencyTag>(numbers, [&](std::size_t m) {
+      double evidence = 0, agree = 0;
+      for(const Unit_edge& e : edges)
+        if(member[m][e.a] != member[m][e.b])
+        {
+          evidence += std::abs(e.weight);
+          agree += (turned[e.a] != turned[e.b]) ? -e.weight : e.weight;
+        }
+      agreement[m] = evidence > 0 ? agree / evidence : 0.;
+      return true;
+    });
+  }
+  turned.pop_back();
+  return turned;
+}
+
+/// The moves of `units_to_turn()`: each unit alone, then the pieces of each
+/// smooth face together, units joined by more weight of edges that join one
+/// face (`joins_one_face()`) than twice the weight of those that say they
+/// are the two sides of a thin part, and at least 3.
+inline std::vector<std::vector<std::uint32_t> > unit_moves(std::size_t units,
+                                                           const std::vector<std::uint32_t>& unit_of_point,
+                                                           const std::vector<Eigen::Vector3d>& points,
+                                                           const std::vector<Eigen::Vector3d>& normals,
+                                                           const std::vector<Signed_edge>& edges,
+                                                           const std::vector<int>& signs)
+{
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::pair<double, double> > between; // one face, two sides
+  for(const Signed_edge& e : edges)
+  {
+    const std::uint32_t a = unit_of_point[e.a], b = unit_of_point[e.b];
+    if(a == b || a >= units || b >= units)
+      continue;
+    std::pair<double, double>& w = between[{ (std::min)(a, b), (std::max)(a, b) }];
+    if(joins_one_face(e, points, normals, signs))
+      w.first += std::abs(e.weight);
+    else if(joins_two_sides(e, normals))
+      w.second += std::abs(e.weight);
+  }
+  std::vector<std::uint32_t> parent(units);
+  std::iota(parent.begin(), parent.end(), std::uint32_t(0));
+  auto find = [&](std::uint32_t v) {
+    while(parent[v] != v)
+      v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  const double least_weight = 3;
+  for(const auto& pair : between)
+    if(pair.second.first >= least_weight && pair.second.first > 2 * pair.second.second)
+    {
+      const std::uint32_t a = find(pair.first.first), b = find(pair.first.second);
+      if(a != b)
+        parent[(std::max)(a, b)] = (std::min)(a, b);
+    }
+  std::vector<std::vector<std::uint32_t> > moves;
+  std::vector<std::vector<std::uint32_t> > faces(units);
+  for(std::uint32_t u = 0; u < units; ++u)
+  {
+    moves.push_back({ u });
+    faces[find(u)].push_back(u);
+  }
+  for(const std::vector<std::uint32_t>& face : faces)
+    if(face.size() > 1)
+      moves.push_back(face);
+  return moves;
+}
+
+/// Each patch that is not a unit of `units` and touches a patch that
+/// `patch_turned` says was turned, and then each one next to one that
+/// this turns, turned where the sum of the signed weights of the `edges`
+/// between it and the other patches, under `signs`, is negative: a piece of
+/// surface too small for the winding number (a strip along an edge, a few
+/// noisy points) goes with the patches around it. Each turn raises the sum
+/// over all the edges, so it ends; the patches are visited in order, round
+/// by round.
+inline void follow_turned_patches(const Sign_patches& patches, const Flip_units& units,
+                                  const std::vector<char>& patch_turned, const std::vector<Signed_edge>& edges,
+                                  std::vector<int>& signs)
+{
+  const std::uint32_t no_unit = std::uint32_t(units.patches.size());
+  // The edges between patches, by patch (compressed rows).
+  std::vector<std::size_t> first(patches.count + 1, 0);
+  for(const Signed_edge& e : edges)
+    if(patches.patch[e.a] != patches.patch[e.b])
+    {
+      ++first[patches.patch[e.a] + 1];
+      ++first[patches.patch[e.b] + 1];
+    }
+  std::partial_sum(first.begin(), first.end(), first.begin());
+  std::vector<std::uint32_t> across(first.back());
+  std::vector<std::size_t> filled(first.begin(), first.end() - 1);
+  for(std::size_t i = 0; i < edges.size(); ++i)
+  {
+    const std::uint32_t pa = patches.patch[edges[i].a], pb = patches.patch[edges[i].b];
+    if(pa != pb)
+    {
+      across[filled[pa]++] = std::uint32_t(i);
+      across[filled[pb]++] = std::uint32_t(i);
+    }
+  }
+  std::vector<std::vector<std::uint32_t> > members(patches.count);
+  for(std::size_t v = 0; v < patches.patch.size(); ++v)
+    members[patches.patch[v]].push_back(std::uint32_t(v));
+  auto other_patch = [&](const Signed_edge& e, std::uint32_t p) {
+    return patches.patch[e.a] == p ? patches.patch[e.b] : patches.patch[e.a];
+  };
+  std::vector<char> pending(patches.count, 0);
+  auto mark_neighbors = [&](std::uint32_t p) {
+    for(std::size_t t = first[p]; t < first[p + 1]; ++t)
+    {
+      const std::uint32_t o = other_patch(edges[across[t]], p);
+      if(units.unit[o] == no_unit)
+        pending[o] = 1;
+    }
+  };
+  for(std::uint32_t p = 0; p < patches.count; ++p)
+    if(patch_turned[p])
+      mark_neighbors(p);
+  for(bool any = true; any;)
+  {
+    any = false;
+    for(std::uint32_t p = 0; p < patches.count; ++p)
+    {
+      if(!pending[p])
+        continue;
+      pending[p] = 0;
+      double sum = 0;
+      for(std::size_t t = first[p]; t < first[p + 1]; ++t)
+      {
+        const Signed_edge& e = edges[across[t]];
+        sum += e.weight * signs[e.a] * signs[e.b];
+      }
+      if(sum < 0)
+      {
+        for(std::uint32_t v : members[p])
+          signs[v] = -signs[v];
+        mark_neighbors(p);
+        any = true;
+      }
+    }
+  }
+}
+
+/// The signs `signs` of the unit `normals` at `points` (each standing for
+/// `areas[v]` of the surface), checked as a whole: the cloud falls into
+/// patches that the signs orient as one (`sign_patches()`), of which the
+/// largest are turned over where the winding number of the whole cloud,
+/// away from the surface, says so (`units_to_turn()`); then each smaller
+/// patch next to a turned one follows the sum of the `edges` that join it
+/// to the rest, as the agglomeration would have joined it. Where nothing
+/// is turned, the signs are returned as they are.
+template <typename ConcurrencyTag>
+std::vector<int> global_signs(const std::vector<Eigen::Vector3d>& points, const std::vector<Eigen::Vector3d>& normals,
+                              const std::vector<double>& areas, const std::vector<Signed_edge>& edges,
+                              std::vector<int> signs)
+{
+  // Patches of fewer points than this barely move the winding number a few
+  // cells away; the local signs stand there.
+  const std::size_t least_points = (std::max<std::size_t>)(50, points.size() / 1000), most_units = 128;
+  const std::size_t size = points.size();
+  const Sign_patches patches = sign_patches(points, edges, normals, signs);
+  const Flip_units units = flip_units(patches, least_points, most_units);
+  const std::size_t unit_count = units.patches.size();
+  if(unit_count == 0)
+    return signs;
+  std::vector<Eigen::Vector3d> oriented(size);
+  std::vector<std::uint32_t> unit_of_point(size);
+  for(std::size_t v = 0; v < size; ++v)
+  {
+    oriented[v] = double(signs[v]) * normals[v];
+    unit_of_point[v] = units.unit[patches.patch[v]];
+  }
+  Patch_winding_numbers field(points, oriented, areas, unit_of_point, unit_count, ConcurrencyTag());
+  if(field.size() == 0)
+    return signs;
+  // The edges between units (or from a unit to a point of none) across a
+  // sharp edge or a thin part: not those within one face.
+  std::vector<Unit_edge> unit_edges;
+  for(const Signed_edge& e : edges)
+  {
+    const std::uint32_t a = unit_of_point[e.a], b = unit_of_point[e.b];
+    const double c = normals[e.a].dot(normals[e.b]);
+    const bool within_face = std::abs(c) > cos_parallel && e.weight * c > 0;
+    if(a != b && !within_face && e.weight != 0)
+      unit_edges.push_back({ (std::min)(a, b), (std::max)(a, b), e.weight * signs[e.a] * signs[e.b] });
+  }
+  const std::vector<char> turned = units_to_turn<ConcurrencyTag>(
+    field, unit_count, unit_moves(unit_count, unit_of_point, points, normals, edges, signs), unit_edges);
+  if(std::find(turned.begin(), turned.end(), char(1)) == turned.end())
+    return signs;
+  std::vector<char> patch_turned(patches.count, 0);
+  for(std::size_t u = 0; u < unit_count; ++u)
+    patch_turned[units.patches[u]] = turned[u];
+  for(std::size_t v = 0; v < size; ++v)
+    if(patch_turned[patches.patch[v]])
+      signs[v] = -signs[v];
+  follow_turned_patches(patches, units, patch_turned, edges, signs);
+  return signs;
+}
+
+} // namespace internal
+} // namespace RRHT
+} // namespace CGAL
+
+#endif // CGAL_RRHT_INTERNAL_GLOBAL_SIGNS_H

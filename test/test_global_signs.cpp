@@ -1,0 +1,299 @@
+// Copyright (c) 2026 The CGAL RRHT authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The global check of a consistent orientation's signs: the patches
+// (sign_patches.h), the winding number of each patch apart
+// (Patch_winding_numbers.h) and the patches turned back (global_signs.h),
+// on exact normals of closed and open surfaces, one face turned inward.
+
+#include <CGAL/RRHT/internal/global_signs.h>
+
+#include <catch2/catch.hpp>
+
+#include <CGAL/tags.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <random>
+#include <vector>
+
+namespace {
+
+namespace internal = CGAL::RRHT::internal;
+
+// Points on a surface, their exact outward unit normals, the area each
+// stands for, and the face each is on.
+struct Surface
+{
+  std::vector<Eigen::Vector3d> points, normals;
+  std::vector<double> areas;
+  std::vector<int> face;
+};
+
+// `n` points drawn uniformly on the faces `draw(face, u, v)` (a point and
+// its normal from two uniform numbers) of the given areas.
+Surface sample(const std::vector<double>& face_areas, std::size_t n, unsigned int seed,
+               const std::function<void(int, double, double, Eigen::Vector3d&, Eigen::Vector3d&)>& draw)
+{
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> uniform(0, 1);
+  double total = 0;
+  for(double a : face_areas)
+    total += a;
+  Surface s;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    double pick = uniform(rng) * total;
+    int f = 0;
+    while(f + 1 < int(face_areas.size()) && pick > face_areas[f])
+      pick -= face_areas[f++];
+    Eigen::Vector3d p, normal;
+    const double u = uniform(rng), v = uniform(rng);
+    draw(f, u, v, p, normal);
+    s.points.push_back(p);
+    s.normals.push_back(normal);
+    s.areas.push_back(total / double(n));
+    s.face.push_back(f);
+  }
+  return s;
+}
+
+// The cube [-1, 1]^3, its faces 0 to 5 along -x, +x, -y, +y, -z, +z.
+Surface cube(std::size_t n, unsigned int seed)
+{
+  return sample(std::vector<double>(6, 4.), n, seed,
+                [](int f, double u, double v, Eigen::Vector3d& p, Eigen::Vector3d& normal) {
+                  const int axis = f / 2;
+                  const double side = f % 2 ? 1. : -1.;
+                  normal = Eigen::Vector3d::Zero();
+                  normal[axis] = side;
+                  p[axis] = side;
+                  p[(axis + 1) % 3] = 2 * u - 1;
+                  p[(axis + 2) % 3] = 2 * v - 1;
+                });
+}
+
+// A tube along z: outer radius 1 (face 0), a bore of radius 0.5 (face 1),
+// from z = -1 to 1, closed by two annuli (faces 2 and 3).
+Surface tube(std::size_t n, unsigned int seed)
+{
+  const double pi = 3.141592653589793, outer = 1, inner = 0.5;
+  const double annulus = pi * (outer * outer - inner * inner);
+  return sample({ 4 * pi * outer, 4 * pi * inner, annulus, annulus }, n, seed,
+                [&](int f, double u, double v, Eigen::Vector3d& p, Eigen::Vector3d& normal) {
+                  const double angle = 2 * pi * u;
+                  const Eigen::Vector3d radial(std::cos(angle), std::sin(angle), 0);
+                  if(f < 2)
+                  {
+                    const double r = f == 0 ? outer : inner;
+                    p = r * radial + Eigen::Vector3d(0, 0, 2 * v - 1);
+                    normal = f == 0 ? radial : Eigen::Vector3d(-radial);
+                  }
+                  else
+                  {
+                    // Uniform over the annulus' area.
+                    const double r = std::sqrt(inner * inner + v * (outer * outer - inner * inner));
+                    const double z = f == 2 ? -1. : 1.;
+                    p = r * radial + Eigen::Vector3d(0, 0, z);
+                    normal = Eigen::Vector3d(0, 0, z);
+                  }
+                });
+}
+
+// The square [-1, 1]^2 at z = 0, normal +z: an open surface.
+Surface square(std::size_t n, unsigned int seed)
+{
+  return sample({ 4. }, n, seed, [](int, double u, double v, Eigen::Vector3d& p, Eigen::Vector3d& normal) {
+    p = Eigen::Vector3d(2 * u - 1, 2 * v - 1, 0);
+    normal = Eigen::Vector3d(0, 0, 1);
+  });
+}
+
+// A normal's line in a sense that does not tell its orientation (+x, +y or
+// +z first), as the consistent orientation hands them over.
+Eigen::Vector3d canonical(const Eigen::Vector3d& normal)
+{
+  Eigen::Index largest = 0;
+  normal.cwiseAbs().maxCoeff(&largest);
+  return normal[largest] < 0 ? Eigen::Vector3d(-normal) : normal;
+}
+
+// The edges of each point to its `k` nearest (by brute force), weighted as
+// the consistent orientation weighs pairs: parallel normals by their dot
+// product, others by the reflection criterion; pairs on the two faces of
+// `opposite(a, b)` by the opposite of their dot product.
+std::vector<internal::Signed_edge> knn_edges(const Surface& s, const std::vector<Eigen::Vector3d>& normals,
+                                             unsigned int k)
+{
+  std::vector<internal::Signed_edge> edges;
+  std::vector<std::pair<double, std::uint32_t> > distances;
+  for(std::uint32_t i = 0; i < s.points.size(); ++i)
+  {
+    distances.clear();
+    for(std::uint32_t j = 0; j < s.points.size(); ++j)
+      if(j != i)
+        distances.emplace_back((s.points[j] - s.points[i]).squaredNorm(), j);
+    std::partial_sort(distances.begin(), distances.begin() + k, distances.end());
+    for(unsigned int t = 0; t < k; ++t)
+    {
+      const std::uint32_t j = distances[t].second;
+      if(j < i)
+        continue; // each pair once, from its first point (a few one-way pairs are left out)
+      const double c = normals[i].dot(normals[j]);
+      const Eigen::Vector3d u = (s.points[j] - s.points[i]).normalized();
+      const double weight =
+        std::abs(c) > internal::cos_parallel ? c : c - 2 * normals[i].dot(u) * normals[j].dot(u);
+      edges.push_back({ i, j, weight });
+    }
+  }
+  return edges;
+}
+
+// Everything the global check takes: the canonical normals, the edges and
+// the signs that turn the canonical normals outward.
+struct Oriented
+{
+  Surface surface;
+  std::vector<Eigen::Vector3d> normals;
+  std::vector<internal::Signed_edge> edges;
+  std::vector<int> outward;
+};
+
+Oriented oriented(Surface s)
+{
+  Oriented o;
+  for(const Eigen::Vector3d& normal : s.normals)
+  {
+    o.normals.push_back(canonical(normal));
+    o.outward.push_back(o.normals.back().dot(normal) > 0 ? 1 : -1);
+  }
+  o.edges = knn_edges(s, o.normals, 12);
+  o.surface = std::move(s);
+  return o;
+}
+
+// The signs with the points of face `f` turned over.
+std::vector<int> face_turned(const Oriented& o, int f)
+{
+  std::vector<int> signs = o.outward;
+  for(std::size_t v = 0; v < signs.size(); ++v)
+    if(o.surface.face[v] == f)
+      signs[v] = -signs[v];
+  return signs;
+}
+
+template <typename ConcurrencyTag = CGAL::Sequential_tag>
+std::vector<int> checked(const Oriented& o, const std::vector<int>& signs)
+{
+  return internal::global_signs<ConcurrencyTag>(o.surface.points, o.normals, o.surface.areas, o.edges, signs);
+}
+
+} // namespace
+
+TEST_CASE("Sign patches: a face each, never across a sharp edge or a turned face, a curved face in pieces",
+          "[orientation]")
+{
+  const Oriented box = oriented(cube(3000, 1));
+  for(int turned = -1; turned < 6; ++turned)
+  {
+    INFO("face " << turned << " turned");
+    const internal::Sign_patches patches =
+      internal::sign_patches(box.surface.points, box.edges, box.normals, face_turned(box, turned));
+    // Each face is one patch, and each patch lies on one face.
+    std::vector<int> face_of_patch(patches.count, -1);
+    for(std::size_t v = 0; v < patches.patch.size(); ++v)
+    {
+      int& f = face_of_patch[patches.patch[v]];
+      CHECK((f == -1 || f == box.surface.face[v]));
+      f = box.surface.face[v];
+    }
+    CHECK(patches.count == 6);
+  }
+  // The side of the tube: within 20 degrees of the first normal of each
+  // patch, so in at least 360 / 40 pieces.
+  const Oriented pipe = oriented(tube(4000, 2));
+  const internal::Sign_patches patches =
+    internal::sign_patches(pipe.surface.points, pipe.edges, pipe.normals, pipe.outward);
+  std::vector<int> on_outer_side(patches.count, 0);
+  for(std::size_t v = 0; v < patches.patch.size(); ++v)
+    on_outer_side[patches.patch[v]] |= pipe.surface.face[v] == 0;
+  CHECK(std::count(on_outer_side.begin(), on_outer_side.end(), 1) >= 9);
+}
+
+TEST_CASE("Patch winding numbers: 1 inside a closed surface, 0 outside, each group's share apart", "[orientation]")
+{
+  // A unit sphere, its upper and lower halves two groups, outward.
+  std::mt19937 rng(3);
+  std::normal_distribution<double> gaussian;
+  const std::size_t n = 20000;
+  std::vector<Eigen::Vector3d> points, normals;
+  std::vector<double> areas(n, 4 * 3.141592653589793 / double(n));
+  std::vector<std::uint32_t> group;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const Eigen::Vector3d p = Eigen::Vector3d(gaussian(rng), gaussian(rng), gaussian(rng)).normalized();
+    points.push_back(p);
+    normals.push_back(p);
+    group.push_back(p.z() > 0 ? 0 : 1);
+  }
+  const internal::Patch_winding_numbers field(points, normals, areas, group, 2, CGAL::Sequential_tag());
+  REQUIRE(field.size() > 1000);
+  std::size_t inside = 0;
+  for(std::size_t q = 0; q < field.size(); ++q)
+  {
+    const Eigen::Vector3d& p = field.queries()[q];
+    const double upper = field.shares(0)[q], lower = field.shares(1)[q], rest = field.shares(2)[q];
+    INFO("query at " << p.transpose());
+    CHECK(rest == 0);
+    CHECK(std::abs(upper + lower - (p.norm() < 1 ? 1. : 0.)) < internal::winding_tolerance);
+    if(p.norm() < 0.12)
+    {
+      // Near the center each half is seen under nearly half the sphere.
+      ++inside;
+      CHECK(std::abs(upper - 0.5) < 0.06);
+    }
+  }
+  CHECK(inside > 0);
+}
+
+TEST_CASE("Global signs: a face turned inward turns back; right signs and an open surface stay", "[orientation]")
+{
+  const Oriented box = oriented(cube(6000, 4)), pipe = oriented(tube(8000, 5)), sheet = oriented(square(2000, 6));
+  CHECK(checked(box, box.outward) == box.outward);
+  CHECK(checked(pipe, pipe.outward) == pipe.outward);
+  for(int f = 0; f < 6; ++f)
+  {
+    INFO("the box's face " << f << " turned inward");
+    CHECK(checked(box, face_turned(box, f)) == box.outward);
+  }
+  // The bore turned: the winding number in it is 2, not 0. The outer side
+  // turned: -1 around the tube, 0 in the material.
+  for(int f = 0; f < 4; ++f)
+  {
+    INFO("the tube's face " << f << " turned inward");
+    const std::vector<int> signs = checked(pipe, face_turned(pipe, f));
+    std::vector<std::size_t> wrong(4, 0);
+    for(std::size_t v = 0; v < signs.size(); ++v)
+      wrong[pipe.surface.face[v]] += signs[v] != pipe.outward[v];
+    INFO("wrong on each face: " << wrong[0] << " " << wrong[1] << " " << wrong[2] << " " << wrong[3]);
+    CHECK(signs == pipe.outward);
+  }
+  // Whichever way an open sheet is turned, nothing says the other is right.
+  for(int sense : { 1, -1 })
+  {
+    std::vector<int> signs = sheet.outward;
+    for(int& s : signs)
+      s *= sense;
+    CHECK(checked(sheet, signs) == signs);
+  }
+}
+
+TEST_CASE("Global signs: the same for any number of threads", "[orientation]")
+{
+  const Oriented pipe = oriented(tube(8000, 7));
+  const std::vector<int> turned = face_turned(pipe, 1);
+  CHECK(checked<CGAL::Parallel_if_available_tag>(pipe, turned) == checked(pipe, turned));
+}
