@@ -122,21 +122,27 @@ std::vector<char> units_to_turn(Patch_winding_numbers& field, std::size_t units,
       sum += field.shares(u)[q];
     return sum;
   };
+  // How far the edges of each move agree with the signs as they are, from
+  // -1 (all against) to 1.
+  auto find_agreements = [&] {
+    CGAL::for_each<ConcurrencyTag>(numbers, [&](std::size_t m) {
+      double evidence = 0, agree = 0;
+      for(const Unit_edge& e : edges)
+        if(member[m][e.a] != member[m][e.b])
+        {
+          evidence += std::abs(e.weight);
+          agree += (turned[e.a] != turned[e.b]) ? -e.weight : e.weight;
+        }
+      agreement[m] = evidence > 0 ? agree / evidence : 0.;
+      return true;
+    });
+  };
   CGAL::for_each<ConcurrencyTag>(numbers, [&](std::size_t m) {
     for(std::size_t q = 0; q < queries; ++q)
       moved[m] += (std::max)(0., 2 * std::abs(share(m, q)) - winding_tolerance);
-    // How far the move's edges agree with the signs as they are, from -1
-    // (all against) to 1.
-    double evidence = 0, agree = 0;
-    for(const Unit_edge& e : edges)
-      if(member[m][e.a] != member[m][e.b])
-      {
-        evidence += std::abs(e.weight);
-        agree += (turned[e.a] != turned[e.b]) ? -e.weight : e.weight;
-      }
-    agreement[m] = evidence > 0 ? agree / evidence : 0.;
     return true;
   });
+  find_agreements();
   for(std::size_t turns = 0; turns < 2 * moves.size(); ++turns)
   {
     CGAL::for_each<ConcurrencyTag>(numbers, [&](std::size_t m) {
@@ -170,18 +176,7 @@ std::vector<char> units_to_turn(Patch_winding_numbers& field, std::size_t units,
       }
       turned[u] = char(!turned[u]);
     }
-    // The agreement of the moves whose edges the turn changed.
-    CGAL::for_each<ConcurrencyTag>(numbers, [&](std::size_t m) {
-      double evidence = 0, agree = 0;
-      for(const Unit_edge& e : edges)
-        if(member[m][e.a] != member[m][e.b])
-        {
-          evidence += std::abs(e.weight);
-          agree += (turned[e.a] != turned[e.b]) ? -e.weight : e.weight;
-        }
-      agreement[m] = evidence > 0 ? agree / evidence : 0.;
-      return true;
-    });
+    find_agreements();
   }
   turned.pop_back();
   return turned;
