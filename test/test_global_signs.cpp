@@ -259,7 +259,7 @@ TEST_CASE("Patch winding numbers: 1 inside a closed surface, 0 outside, each gro
   CHECK(inside > 0);
 }
 
-TEST_CASE("Global signs: a face turned inward turns back; right signs and an open surface stay", "[orientation]")
+TEST_CASE("Global signs: a face turned inward turns back, right signs and an open surface stay", "[orientation]")
 {
   const Oriented box = oriented(cube(6000, 4)), pipe = oriented(tube(8000, 5)), sheet = oriented(square(2000, 6));
   CHECK(checked(box, box.outward) == box.outward);
