@@ -29,6 +29,7 @@ struct Dataset
   double noise_percent = 0;
   double outliers_percent = 0;
   std::size_t inliers = 0; // the samples before the outliers
+  unsigned int noise_seed = 0; // the noise's draw, where several are compared (0: not said)
 };
 
 /// A clean cloud with noise added; every sample is an inlier.
@@ -39,6 +40,7 @@ inline Dataset with_noise(const std::string& name, Cloud cloud, double noise_per
   d.cloud = std::move(cloud);
   add_noise(d.cloud, noise_percent, seed + 1000);
   d.noise_percent = noise_percent;
+  d.noise_seed = noise_percent > 0 ? seed + 1000 : 0;
   d.inliers = d.cloud.size();
   return d;
 }

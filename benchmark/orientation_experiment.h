@@ -12,10 +12,11 @@
 namespace {
 
 // -- Orientation (beyond the paper): CGAL::rrht_orient_normals() (consistent,
-// k = 18, as `rrht_normals --orient`) on RRHT's default normals, against
-// CGAL::mst_orient_normals() (k = 18) on RRHT's and on jet fitting's (K = 80)
-// normals, and, when built with Open3D, Open3D's orientation (k = 10) on its
-// own normals (K = 30) and on RRHT's. Quality on 100k-point closed shapes
+// k = 18, as `rrht_normals --orient`) on the normals of both RRHT settings
+// and of jet fitting (K = 80), against CGAL::mst_orient_normals() (k = 18) on
+// RRHT's and on jet fitting's normals, and, when built with Open3D, Open3D's
+// orientation (k = 10) on its own normals (K = 30) and on RRHT's. Quality on
+// 50k- and 100k-point closed shapes, synthetic and real, three noise draws each
 // (against the exact outward normal, and the largest connected patch of
 // inward normals), open shapes (the share on the minority side) and a real
 // scan (agreement with the nearest neighbors), written to
@@ -150,15 +151,29 @@ Cloud thin_shape(const std::string& name, std::size_t n, unsigned int seed)
 }
 
 /// The closed shapes of the experiment, in their order, each with the seed
-/// of its cloud: the cube, the closed cylinder, the fandisk and anchor meshes
-/// of ../shared/data, the hollow box, the finned part, and the machined parts
-/// of test/shapes.h (a slotted disk, a spool, a drilled block, a spur gear,
-/// and the closed blade, whose thickness goes to zero at its edges).
+/// of its cloud: the cube, the closed cylinder, the CAD meshes of
+/// ../shared/data (`is_closed_mesh()`), the hollow box, the finned part, and the
+/// machined parts of test/shapes.h (a slotted disk, a spool, a drilled block,
+/// a spur gear, and the closed blade, whose thickness goes to zero at its
+/// edges).
 const std::pair<const char*, unsigned int> closed_shape_list[] = {
-  { "cube", 41 },         { "cylinder", 42 }, { "fandisk", 43 },      { "anchor", 43 },
-  { "hollow_box", 44 },   { "finned_part", 45 }, { "slotted_disk", 52 }, { "spool", 53 },
-  { "drilled_block", 54 }, { "gear", 55 },    { "closed_blade", 56 }
+  { "cube", 41 },          { "cylinder", 42 },     { "fandisk", 43 },  { "anchor", 43 },
+  { "dragknob", 57 },      { "pipe", 58 },         { "u", 59 },        { "handle", 60 },
+  { "tripod", 61 },        { "cross", 62 },        { "hollow_box", 44 }, { "finned_part", 45 },
+  { "slotted_disk", 52 },  { "spool", 53 },        { "drilled_block", 54 }, { "gear", 55 },
+  { "closed_blade", 56 }
 };
+
+/// The closed CAD meshes of ../shared/data/meshes (MANIFEST.md): fandisk,
+/// anchor, a knob with a bore, a thick tube, a U-shaped bracket, a rounded
+/// handle with a hole, a tripod-shaped and a cross-shaped extrusion.
+bool is_closed_mesh(const std::string& name)
+{
+  for(const char* mesh : { "fandisk", "anchor", "dragknob", "pipe", "u", "handle", "tripod", "cross" })
+    if(name == mesh)
+      return true;
+  return false;
+}
 
 /// `n` points of the closed shape `name` (`closed_shape_list`) drawn with
 /// `seed`, their exact normals turned outward; false (with a message) if it
@@ -171,7 +186,7 @@ bool closed_cloud(const Config& config, const std::string& name, std::size_t n, 
     cloud = name == "cube" ? cube(n, seed) : closed_cylinder(n, seed);
     convex_about_origin = true;
   }
-  else if(name == "fandisk" || name == "anchor")
+  else if(is_closed_mesh(name))
   {
     if(!sample_mesh(config.shared("meshes/" + name + ".off"), n, seed, cloud))
     {
@@ -292,10 +307,15 @@ double share_disagreeing_with_neighbors(const Cloud& cloud, unsigned int k)
 /// child process; the normals of each estimator are computed once per cloud.
 struct Pipelines
 {
-  Estimator rrht_normals = rrht_default(rrht_k), jet_normals = jet(paper_k);
+  Estimator rrht_normals = rrht_default(rrht_k), precise_normals = rrht_defaults(rrht_k), jet_normals = jet(paper_k);
   Orientation rrht = rrht_orient(orient_k), mst = mst_orient(orient_k);
   std::string name(const Estimator& e, const Orientation& o) const { return e.name + " + " + o.name; }
 };
+
+/// The closed shapes' sizes, and the seeds of their noise draws: whether
+/// local evidence turns a whole face inward depends on the draw.
+const std::size_t closed_sizes[] = { 50000, 100000 };
+const unsigned int noise_seeds[] = { 47, 63, 64 };
 
 /// The closed shapes' bound on the largest connected patch of inward
 /// normals (`largest_inward_patch()`), in points, and the k of its graph.
@@ -324,7 +344,7 @@ class Quality_csv
 public:
   explicit Quality_csv(const Config& config) : csv_(config.out + "/orientation_quality.csv")
   {
-    csv_ << "dataset,kind,points,outliers,noise_percent,outliers_percent,pipeline,status,counted_percent,"
+    csv_ << "dataset,kind,points,outliers,noise_percent,noise_seed,outliers_percent,pipeline,status,counted_percent,"
             "wrong_percent,wrong_all_percent,up_to_flip_percent,largest_inward_patch,not_oriented,normals_s,orient_s,"
             "floor_percent,target_percent,target_patch,met\n";
   }
@@ -341,9 +361,9 @@ public:
     const bool met = r.wrong <= target && (!closed || r.patch <= target_patch);
     const std::size_t not_oriented = ok ? r.orientation.cloud.size() - r.orientation.oriented : 0;
     char line[1024];
-    std::snprintf(line, sizeof line, "%s,%s,%zu,%zu,%g,%g,%s,%s,%.3f,%.4f,%.4f,%.4f,%lld,%zu,%.4f,%.4f,%.4f,%g,%lld,%s",
+    std::snprintf(line, sizeof line, "%s,%s,%zu,%zu,%g,%u,%g,%s,%s,%.3f,%.4f,%.4f,%.4f,%lld,%zu,%.4f,%.4f,%.4f,%g,%lld,%s",
                   d.name.c_str(), r.kind.c_str(), d.inliers, d.cloud.size() - d.inliers, d.noise_percent,
-                  d.outliers_percent, r.pipeline.c_str(),
+                  d.noise_seed, d.outliers_percent, r.pipeline.c_str(),
                   ok ? "ok" : (r.normals->status != Measurement::OK ? r.normals : &r.orientation.measurement)->status_name(),
                   r.counted, r.wrong, r.wrong_all, r.up_to_flip, ok ? r.patch : -1LL, not_oriented, r.normals->median(),
                   r.orientation.measurement.median(), r.floor, target, target_patch, ok ? (met ? "yes" : "no") : "n/a");
@@ -351,9 +371,9 @@ public:
     csv_.flush();
     auto percent = [](double value) { return value < 0 ? std::string("n/a") : std::to_string(value) + "%"; };
     const std::string patch = closed && ok ? "  inward patch " + std::to_string(r.patch) : std::string();
-    std::printf("%-13s %-7zu noise %-4g out %-4g %-46s wrong %7.3f%% (all %s, up to a flip %s) "
+    std::printf("%-13s %-7zu noise %-4g seed %-3u out %-4g %-46s wrong %7.3f%% (all %s, up to a flip %s) "
                 "of %5.1f%%%s  not oriented %zu  target %g%%  %s %s\n",
-                d.name.c_str(), d.inliers, d.noise_percent, d.outliers_percent, r.pipeline.c_str(), r.wrong,
+                d.name.c_str(), d.inliers, d.noise_percent, d.noise_seed, d.outliers_percent, r.pipeline.c_str(), r.wrong,
                 percent(r.wrong_all).c_str(), percent(r.up_to_flip).c_str(), r.counted, patch.c_str(), not_oriented,
                 target, ok ? (met ? "met" : "missed") : "FAILED",
                 ok ? "" : (r.normals->message + " " + r.orientation.measurement.message).c_str());
@@ -403,6 +423,7 @@ void orientation_quality(const Config& config, Quality_csv& csv, const Dataset& 
   const Pipelines p;
   const std::string prefix = "orientation_" + d.name + "_";
   const Step rrht_step = run_step(config, prefix + "rrht.bin", d.cloud, estimation(p.rrht_normals));
+  const Step precise_step = run_step(config, prefix + "precise.bin", d.cloud, estimation(p.precise_normals));
   const Step jet_step = run_step(config, prefix + "jet.bin", d.cloud, estimation(p.jet_normals));
   auto orient = [&](const std::string& pipeline, const Step& normals, const Orientation& o, unsigned int timeout = 0) {
     Quality_row r;
@@ -415,7 +436,11 @@ void orientation_quality(const Config& config, Quality_csv& csv, const Dataset& 
     score(kind, r);
     csv.write(d, r);
   };
+  // The consistent orientation from both RRHT settings' normals and from jet
+  // fitting's, which its users may bring; the MST on the same normals beside it.
   orient(p.name(p.rrht_normals, p.rrht), rrht_step, p.rrht);
+  orient(p.name(p.precise_normals, p.rrht), precise_step, p.rrht);
+  orient(p.name(p.jet_normals, p.rrht), jet_step, p.rrht);
   orient(p.name(p.rrht_normals, p.mst), rrht_step, p.mst);
   orient(p.name(p.jet_normals, p.mst), jet_step, p.mst);
 #ifdef RRHT_BENCHMARK_WITH_OPEN3D
@@ -492,47 +517,41 @@ void orientation(const Config& config)
   {
     Quality_csv csv(config);
     std::ofstream floor(config.out + "/orientation_floor.csv");
-    floor << "cloud,kind,noise_percent,floor_percent\n";
-    const std::size_t n = 100000;
-    for(const Dataset& clean : closed_shapes(config, n))
-    {
-      // The floor at each noise level, against a noise-free sample 10 times denser
-      // drawn with another seed; a shape with thin parts (a floor above 0.1% at
-      // 0.2% noise) runs at 0.05% noise too. Clean, it is 0: every point lies on
-      // its own side (measured against the dense sample, it would count the
-      // points where a part is thinner than that sample's spacing, as the closed
-      // blade near its edges).
-      std::vector<std::pair<double, double> > floors(1, { 0., 0. }); // noise (%), floor (%)
+    floor << "cloud,kind,points,noise_percent,noise_seed,floor_percent\n";
+    for(const std::size_t n : closed_sizes)
+      for(const Dataset& clean : closed_shapes(config, n))
       {
-        Cloud dense;
+        Cloud dense; // noise-free, 10 times denser, another seed: the floors' reference
         if(!closed_cloud(config, clean.name, 10 * n, 51, dense))
           continue;
-        auto floor_at = [&](double noise) {
-          Cloud noisy = clean.cloud;
-          add_noise(noisy, noise, 47);
-          floors.emplace_back(noise, 100. * share_nearer_the_other_side(noisy, dense));
-          floor << clean.name << ",closed," << noise << ',' << floors.back().second << '\n';
-          std::printf("%-13s floor at %g%% noise: %.4f%%\n", clean.name.c_str(), noise, floors.back().second);
-        };
-        floor << clean.name << ",closed,0,0\n";
-        floor_at(0.2);
-        if(floors.back().second > 0.1)
-          floor_at(0.05);
-        floor.flush();
+        orientation_quality(config, csv, clean, "closed", false, 0);
+        // Each noise draw has its floor. A shape with thin parts (a floor above
+        // 0.1% at 0.2% noise on the first draw) runs at 0.05% noise too. Clean,
+        // the floor is 0: every point lies on its own side (measured against
+        // the dense sample, it would count the points where a part is thinner
+        // than that sample's spacing, as the closed blade near its edges).
+        std::vector<double> levels(1, 0.2);
+        for(std::size_t level = 0; level < levels.size(); ++level)
+          for(const unsigned int seed : noise_seeds)
+          {
+            Dataset noisy = clean;
+            add_noise(noisy.cloud, levels[level], seed);
+            noisy.noise_percent = levels[level];
+            noisy.noise_seed = seed;
+            const double floor_percent = 100. * share_nearer_the_other_side(noisy.cloud, dense);
+            floor << clean.name << ",closed," << n << ',' << levels[level] << ',' << seed << ',' << floor_percent
+                  << std::endl;
+            std::printf("%-13s %zu floor at %g%% noise (seed %u): %.4f%%\n", clean.name.c_str(), n, levels[level],
+                        seed, floor_percent);
+            if(levels[level] == 0.2 && seed == noise_seeds[0] && floor_percent > 0.1)
+              levels.push_back(0.05);
+            orientation_quality(config, csv, noisy, "closed", seed == noise_seeds[0], floor_percent);
+          }
+        Dataset outliers = clean; // the outliers alone, without the noise
+        add_outliers(outliers, 1, 0.02 * bounding_box_diagonal(clean.cloud), 48);
+        orientation_quality(config, csv, outliers, "closed", false, 0);
       }
-      orientation_quality(config, csv, clean, "closed", false, 0);
-      std::sort(floors.begin() + 1, floors.end()); // 0.05% before 0.2%
-      for(std::size_t level = 1; level < floors.size(); ++level)
-      {
-        Dataset noisy = clean;
-        add_noise(noisy.cloud, floors[level].first, 47);
-        noisy.noise_percent = floors[level].first;
-        orientation_quality(config, csv, noisy, "closed", true, floors[level].second);
-      }
-      Dataset outliers = clean; // the outliers alone, without the noise
-      add_outliers(outliers, 1, 0.02 * bounding_box_diagonal(clean.cloud), 48);
-      orientation_quality(config, csv, outliers, "closed", false, 0);
-    }
+    const std::size_t n = 100000;
     // Open: a single curved sheet, and a twisted blade 0.04 thick (2% of its
     // chord), sampled on both sides, without caps.
     for(double noise : { 0., 0.2 })
@@ -544,7 +563,7 @@ void orientation(const Config& config)
       const double blade_floor =
         noise > 0 ? 100. * share_nearer_the_other_side(blade.cloud, thin_shape("thin_blade", 10 * n, 51)) : -1;
       if(noise > 0)
-        floor << "thin_blade,open," << noise << ',' << blade_floor << '\n';
+        floor << "thin_blade,open," << n << ',' << noise << ",1050," << blade_floor << '\n';
       orientation_quality(config, csv, blade, "open", noise > 0, blade_floor); // the floor does not move its target
     }
     Dataset bunny;

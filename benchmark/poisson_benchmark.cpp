@@ -698,10 +698,10 @@ int main(int argc, char** argv)
     ("out", po::value<std::string>()->required(), "folder of poisson.csv and poisson.md")
     ("scratch", po::value<std::string>()->default_value(""), "folder of the surfaces (.off), if given")
     ("shapes",
-     po::value<std::string>()->default_value("fandisk,anchor,cube,finned,slotted_disk,spool,drilled_block,gear,"
-                                             "closed_blade"),
-     "comma-separated: fandisk, anchor, cube (meshes of --data), finned, slotted_disk, spool, drilled_block, "
-     "gear and closed_blade (test/shapes.h)")
+     po::value<std::string>()->default_value("fandisk,anchor,cube,dragknob,pipe,u,handle,tripod,cross,"
+                                             "finned,slotted_disk,spool,drilled_block,gear,closed_blade"),
+     "comma-separated: fandisk, anchor, cube, dragknob, pipe, u, handle, tripod, cross (meshes of "
+     "--data), finned, slotted_disk, spool, drilled_block, gear and closed_blade (test/shapes.h)")
     ("points", po::value<std::size_t>()->default_value(100000), "points per cloud")
     ("noise", po::value<std::string>()->default_value("0,0.2"),
      "comma-separated noise levels, in % of the bounding-box diagonal")

@@ -32,11 +32,16 @@ def number(r, column):
 
 
 def orientation_cloud(r):
-    """"cube, 0.2% noise": the cloud of a row of orientation_quality.csv."""
+    """"cube 100k, 0.2% noise (seed 63)": the cloud of a row of
+    orientation_quality.csv (the seed where the CSV has one)."""
+    name = "%s %gk" % (r["dataset"], int(r["points"]) / 1000.)
     if int(r["outliers"]):
-        return "%s, +%g%% outliers" % (r["dataset"], float(r["outliers_percent"]))
+        return "%s, +%g%% outliers" % (name, float(r["outliers_percent"]))
     noise = float(r["noise_percent"])
-    return "%s, %s" % (r["dataset"], "%g%% noise" % noise if noise else "clean")
+    if not noise:
+        return "%s, clean" % name
+    seed = int(r.get("noise_seed") or 0)
+    return "%s, %g%% noise%s" % (name, noise, " (seed %d)" % seed if seed else "")
 
 
 def orientation_wide(rows, pipelines, value, title, lead=()):
@@ -128,9 +133,11 @@ def orientation_report(rows, out):
                       "at 0.05% noise.\n")
         else:
             md += orientation_floors(out, "closed", 0.1)
-        met = [r for r in closed if r["pipeline"] == pipelines[0] and r["met"] == "yes"]
-        md.append("\n%s meets the target on %d of %d closed clouds.\n" % (
-            pipelines[0], len(met), sum(1 for r in closed if r["pipeline"] == pipelines[0])))
+        for p in pipelines:
+            rows_of_p = [r for r in closed if r["pipeline"] == p]
+            if rows_of_p:
+                md.append("\n%s meets the target on %d of %d closed clouds.\n" % (
+                    p, sum(1 for r in rows_of_p if r["met"] == "yes"), len(rows_of_p)))
     opened = [r for r in quality if r["kind"] == "open"]
     if opened:
         md += orientation_wide(opened, pipelines,
