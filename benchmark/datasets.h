@@ -38,9 +38,9 @@ inline Dataset with_noise(const std::string& name, Cloud cloud, double noise_per
   Dataset d;
   d.name = name;
   d.cloud = std::move(cloud);
-  add_noise(d.cloud, noise_percent, seed + 1000);
   d.noise_percent = noise_percent;
   d.noise_seed = noise_percent > 0 ? seed + 1000 : 0;
+  add_noise(d.cloud, noise_percent, d.noise_seed);
   d.inliers = d.cloud.size();
   return d;
 }

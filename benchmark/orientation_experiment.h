@@ -524,6 +524,7 @@ void orientation(const Config& config)
         Cloud dense; // noise-free, 10 times denser, another seed: the floors' reference
         if(!closed_cloud(config, clean.name, 10 * n, 51, dense))
           continue;
+        floor << clean.name << ",closed," << n << ",0,0,0\n";
         orientation_quality(config, csv, clean, "closed", false, 0);
         // Each noise draw has its floor. A shape with thin parts (a floor above
         // 0.1% at 0.2% noise on the first draw) runs at 0.05% noise too. Clean,
@@ -563,7 +564,7 @@ void orientation(const Config& config)
       const double blade_floor =
         noise > 0 ? 100. * share_nearer_the_other_side(blade.cloud, thin_shape("thin_blade", 10 * n, 51)) : -1;
       if(noise > 0)
-        floor << "thin_blade,open," << n << ',' << noise << ",1050," << blade_floor << '\n';
+        floor << "thin_blade,open," << n << ',' << noise << ',' << blade.noise_seed << ',' << blade_floor << '\n';
       orientation_quality(config, csv, blade, "open", noise > 0, blade_floor); // the floor does not move its target
     }
     Dataset bunny;
