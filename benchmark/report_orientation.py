@@ -97,6 +97,55 @@ def orientation_floors(out, kind, target):
     return md
 
 
+# The README's table: these pipelines' columns, where the run has them.
+README_PIPELINES = OrderedDict([
+    ("RRHT_default + rrht_orient_K18", "`rrht_orient_normals`, default normals"),
+    ("RRHT_defaults_K100 + rrht_orient_K18", "`rrht_orient_normals`, precise setting's normals"),
+    ("RRHT_default + mst_orient_K18", "`mst_orient_normals`, default normals"),
+])
+README_TABLE_HEADING = "## The README's table"
+
+
+def readme_table(closed):
+    """The README's orientation table, from the closed rows of orientation_quality.csv: each
+    closed shape at the largest size with 0.2% noise, for each pipeline of README_PIPELINES
+    the worst of the noise draws (% inward, largest inward patch), the largest floor of those
+    draws; then, for each, on how many closed clouds of the run (every size, draw, noise level
+    and outliers) it meets the target."""
+    ok = [r for r in closed if r["status"] == "ok"]
+    if not ok:
+        return []
+    size = max(int(r["points"]) for r in ok)
+    pipelines = [p for p in README_PIPELINES if any(r["pipeline"] == p for r in ok)]
+    shapes = OrderedDict()
+    for r in ok:
+        if int(r["points"]) == size and not int(r["outliers"]) and float(r["noise_percent"]) == 0.2:
+            shapes.setdefault(r["dataset"], []).append(r)
+    draws = max((len({r.get("noise_seed") for r in rs}) for rs in shapes.values()), default=0)
+    lines = ["| closed shape, %dk points, 0.2%% noise (worst of %d draw%s) | floor | %s |" % (
+                 size // 1000, draws, "" if draws == 1 else "s", " | ".join(README_PIPELINES[p] for p in pipelines)),
+             "|---|---|" + "---|" * len(pipelines)]
+    for shape, rs in shapes.items():
+        floors = [number(r, "floor_percent") or 0. for r in rs]
+        cells = []
+        for p in pipelines:
+            of_p = [r for r in rs if r["pipeline"] == p]
+            if not of_p:
+                cells.append("not run")
+                continue
+            worst = max(float(r["wrong_percent"]) for r in of_p)
+            patch = max(number(r, "largest_inward_patch") or 0 for r in of_p)
+            cells.append("%.2f%% (%d)" % (worst, patch))
+        lines.append("| %s | %s | %s |" % (shape.replace("_", " "), "%.2f%%" % max(floors) if max(floors) else "0",
+                                           " | ".join(cells)))
+    lines.append("")
+    for p in pipelines:
+        of_p = [r for r in closed if r["pipeline"] == p]
+        lines.append("%s: the target met on %d of %d closed clouds." % (
+            README_PIPELINES[p], sum(1 for r in of_p if r["met"] == "yes"), len(of_p)))
+    return ["\n%s\n" % README_TABLE_HEADING, "Copied in the README, which a test checks against this.\n"] + lines
+
+
 def orientation_report(rows, out):
     """orientation.md: the quality tables of orientation_quality.csv, the time
     against the number of points of orientation.csv (plot), and the targets."""
@@ -138,6 +187,8 @@ def orientation_report(rows, out):
             if rows_of_p:
                 md.append("\n%s meets the target on %d of %d closed clouds.\n" % (
                     p, sum(1 for r in rows_of_p if r["met"] == "yes"), len(rows_of_p)))
+        if with_floor:
+            md += readme_table(closed)
     opened = [r for r in quality if r["kind"] == "open"]
     if opened:
         md += orientation_wide(opened, pipelines,

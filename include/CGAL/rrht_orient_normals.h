@@ -86,7 +86,8 @@ namespace CGAL {
    number of all the oriented points (Barill et al. 2018), away from the
    surface, comes nearer those of a solid (0 outside, 1 inside) for it: a
    whole face that the local evidence turned inward, which no local
-   evidence can see, is turned back. Clusters with no evidence between
+   evidence can see, is turned back; so are both sides of a thin wall
+   turned together, where the winding number between them says so. Clusters with no evidence between
    them, such as separate objects, are each oriented so. Only the lines of
    the given normals count: flipping any of them before the call changes
    nothing in the result. The user manual says why, and the benchmark

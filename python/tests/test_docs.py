@@ -59,6 +59,15 @@ def test_the_readme_cpp_block_is_the_example_that_ctest_runs():
     assert code == example[example.index("#include"):]
 
 
+def test_the_readme_orientation_table_is_the_benchmarks():
+    # benchmark/report_orientation.py writes the table under this heading, then the open shapes.
+    results = (ROOT / "benchmark" / "results" / "orientation" / "orientation.md").read_text()
+    section = results[results.index("## The README's table"):]
+    table = section[section.index("| closed shape"):]
+    table = table[:table.index("\n#")].strip("\n")
+    assert table.count("\n|") > 5 and table in PAGES["README.md"]
+
+
 def test_the_manual_embeds_the_examples_that_ctest_runs():
     """The manual has no C++ of its own: it embeds the example programs, which ctest builds and runs."""
     assert not blocks("doc/user_manual.md", "cpp")

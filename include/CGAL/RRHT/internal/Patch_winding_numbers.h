@@ -41,7 +41,8 @@ namespace internal {
 /// winding number is evaluated away from the surface, where a patch that is
 /// turned over changes it by its whole share, while a step either side of a
 /// point would see the patch's own share turn with it. Each query's sums
-/// are taken in the same order whatever the number of threads.
+/// are taken in the same order whatever the number of threads. It keeps
+/// references to `points`, `normals` and `areas`, which must outlive it.
 class Patch_winding_numbers
 {
 public:
@@ -49,7 +50,7 @@ public:
   Patch_winding_numbers(const std::vector<Eigen::Vector3d>& points, const std::vector<Eigen::Vector3d>& normals,
                         const std::vector<double>& areas, const std::vector<std::uint32_t>& group, std::size_t groups,
                         ConcurrencyTag)
-    : m_groups(groups)
+    : m_groups(groups), m_points(&points), m_normals(&normals), m_areas(&areas)
   {
     if(!bound(points))
       return;
@@ -73,6 +74,18 @@ public:
   /// The query points.
   const std::vector<Eigen::Vector3d>& queries() const { return m_queries; }
 
+  /// The share of each group (then of the points of none) in the winding
+  /// number at any point `q`: as at the queries, but the finest cells near
+  /// `q` are summed point by point, so that it may lie between two sides of
+  /// a part thinner than a cell.
+  std::vector<double> shares_at(const Eigen::Vector3d& q) const
+  {
+    std::vector<double> sums(m_groups + 1, 0.);
+    if(!m_levels.empty())
+      add_shares(q, 0, 0, sums, true);
+    return sums;
+  }
+
   /// The share of group `g` (`groups` for the points of no group) in the
   /// winding number at each query, in the order of `queries()`.
   const float* shares(std::size_t g) const { return m_shares.data() + g * m_queries.size(); }
@@ -83,13 +96,15 @@ private:
   static constexpr double opening = 0.5;
   static constexpr int clearance = 3;
 
-  // The moments of one group's points in one cell.
+  // The moments of one group's points in one cell; at the finest level,
+  // also where its points are in `m_order`.
   struct Cell_group
   {
     std::uint32_t code; // Morton code of the cell at its level
     std::uint32_t group;
     Eigen::Vector3d moment, centroid;
     double area;
+    std::uint32_t first = 0, count = 0;
   };
 
   bool bound(const std::vector<Eigen::Vector3d>& points)
@@ -143,15 +158,19 @@ private:
     std::sort(keys.begin(), keys.end());
     m_levels.assign(depth + 1, std::vector<Cell_group>());
     std::vector<Cell_group>& finest = m_levels[depth];
-    for(const auto& key : keys)
+    m_order.resize(keys.size());
+    for(std::size_t t = 0; t < keys.size(); ++t)
     {
+      const auto& key = keys[t];
       const std::uint32_t code = std::uint32_t(key.first >> 32), g = std::uint32_t(key.first & 0xffffffffu);
       if(finest.empty() || finest.back().code != code || finest.back().group != g)
-        finest.push_back({ code, g, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), 0. });
+        finest.push_back({ code, g, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), 0., std::uint32_t(t), 0 });
       const std::uint32_t v = key.second;
+      m_order[t] = v;
       finest.back().moment += areas[v] * normals[v];
       finest.back().centroid += areas[v] * points[v];
       finest.back().area += areas[v];
+      ++finest.back().count;
     }
     for(Cell_group& c : finest)
       c.centroid = c.area > 0 ? Eigen::Vector3d(c.centroid / c.area) : Eigen::Vector3d::Zero();
@@ -159,7 +178,7 @@ private:
     {
       std::vector<Cell_group> parents;
       for(const Cell_group& c : m_levels[level])
-        parents.push_back({ c.code >> 3, c.group, c.moment, c.area * c.centroid, c.area });
+        parents.push_back({ c.code >> 3, c.group, c.moment, c.area * c.centroid, c.area, 0, 0 });
       std::stable_sort(parents.begin(), parents.end(), [](const Cell_group& x, const Cell_group& y) {
         return x.code != y.code ? x.code < y.code : x.group < y.group;
       });
@@ -209,8 +228,10 @@ private:
         }
   }
 
-  // Adds the shares of the cell of `code` at `level` at query `q` to `sums`.
-  void add_shares(const Eigen::Vector3d& q, unsigned int level, std::uint32_t code, std::vector<double>& sums) const
+  // Adds the shares of the cell of `code` at `level` at query `q` to `sums`;
+  // with `point_by_point`, the finest cells near `q` point by point.
+  void add_shares(const Eigen::Vector3d& q, unsigned int level, std::uint32_t code, std::vector<double>& sums,
+                  bool point_by_point = false) const
   {
     const std::vector<Cell_group>& cells = m_levels[level];
     auto first = std::lower_bound(cells.begin(), cells.end(), code,
@@ -223,19 +244,29 @@ private:
       center += side * Eigen::Vector3d(double((code >> (3 * bit)) & 1u), double((code >> (3 * bit + 1)) & 1u),
                                        double((code >> (3 * bit + 2)) & 1u)) * double(1u << bit);
     center += Eigen::Vector3d::Constant(side / 2);
-    if(level < depth && side > opening * (center - q).norm())
+    const bool near = side > opening * (center - q).norm();
+    if(level < depth && near)
     {
       for(std::uint32_t child = 0; child < 8; ++child)
-        add_shares(q, level + 1, (code << 3) | child, sums);
+        add_shares(q, level + 1, (code << 3) | child, sums, point_by_point);
       return;
     }
     for(auto it = first; it != cells.end() && it->code == code; ++it)
-    {
-      const Eigen::Vector3d d = it->centroid - q;
-      const double r = d.norm();
-      if(r > 0)
-        sums[it->group] += it->moment.dot(d) / (4 * CGAL_PI * r * r * r);
-    }
+      if(near && point_by_point)
+        for(std::uint32_t t = it->first; t < it->first + it->count; ++t)
+        {
+          const std::uint32_t v = m_order[t];
+          sums[it->group] += dipole((*m_areas)[v] * (*m_normals)[v], (*m_points)[v] - q);
+        }
+      else
+        sums[it->group] += dipole(it->moment, it->centroid - q);
+  }
+
+  // The winding number at a query `d` from a dipole of moment `moment`.
+  static double dipole(const Eigen::Vector3d& moment, const Eigen::Vector3d& d)
+  {
+    const double r = d.norm();
+    return r > 0 ? moment.dot(d) / (4 * CGAL_PI * r * r * r) : 0.;
   }
 
   std::size_t m_groups;
@@ -243,6 +274,10 @@ private:
   Eigen::Vector3d m_corner = Eigen::Vector3d::Zero();
   std::vector<std::vector<Cell_group> > m_levels; // by level, each sorted by code then group
   std::vector<Eigen::Vector3d> m_queries;
+  const std::vector<Eigen::Vector3d>* m_points = nullptr; // the arrays given, for the point-by-point sums
+  const std::vector<Eigen::Vector3d>* m_normals = nullptr;
+  const std::vector<double>* m_areas = nullptr;
+  std::vector<std::uint32_t> m_order; // the points by finest cell, then group
   std::vector<float> m_shares; // group-major: m_shares[g * size() + q]
 };
 

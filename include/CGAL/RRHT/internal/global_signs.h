@@ -182,29 +182,45 @@ std::vector<char> units_to_turn(Patch_winding_numbers& field, std::size_t units,
   return turned;
 }
 
-/// The moves of `units_to_turn()`: each unit alone, then the pieces of each
-/// smooth face together, units joined by more weight of edges that join one
-/// face (`joins_one_face()`) than twice the weight of those that say they
-/// are the two sides of a thin part, and at least 3.
-inline std::vector<std::vector<std::uint32_t> > unit_moves(std::size_t units,
-                                                           const std::vector<std::uint32_t>& unit_of_point,
-                                                           const std::vector<Eigen::Vector3d>& points,
-                                                           const std::vector<Eigen::Vector3d>& normals,
-                                                           const std::vector<Signed_edge>& edges,
-                                                           const std::vector<int>& signs)
+/// How the units (`unit_of_point`, `units` for a point of none) are
+/// joined: for each pair of units, the weight of the edges between them
+/// that join one face (`joins_one_face()`), and of those that say they are
+/// the two sides of a thin part or of a narrow gap (`joins_two_sides()`).
+struct Unit_link
 {
-  std::map<std::pair<std::uint32_t, std::uint32_t>, std::pair<double, double> > between; // one face, two sides
+  double one_face = 0, two_sides = 0;
+};
+
+/// Units joined by at least this weight of edges are joined.
+constexpr double least_link_weight = 3;
+
+inline std::map<std::pair<std::uint32_t, std::uint32_t>, Unit_link>
+unit_links(std::size_t units, const std::vector<std::uint32_t>& unit_of_point,
+           const std::vector<Eigen::Vector3d>& points, const std::vector<Eigen::Vector3d>& normals,
+           const std::vector<Signed_edge>& edges, const std::vector<int>& signs)
+{
+  std::map<std::pair<std::uint32_t, std::uint32_t>, Unit_link> links;
   for(const Signed_edge& e : edges)
   {
     const std::uint32_t a = unit_of_point[e.a], b = unit_of_point[e.b];
     if(a == b || a >= units || b >= units)
       continue;
-    std::pair<double, double>& w = between[{ (std::min)(a, b), (std::max)(a, b) }];
+    Unit_link& link = links[{ (std::min)(a, b), (std::max)(a, b) }];
     if(joins_one_face(e, points, normals, signs))
-      w.first += std::abs(e.weight);
+      link.one_face += std::abs(e.weight);
     else if(joins_two_sides(e, normals))
-      w.second += std::abs(e.weight);
+      link.two_sides += std::abs(e.weight);
   }
+  return links;
+}
+
+/// The moves of `units_to_turn()`: each unit alone, then the pieces of each
+/// smooth face together, units joined (`unit_links()`) by more weight of
+/// edges that join one face than twice the weight of those that say they
+/// are the two sides of a thin part, and at least `least_link_weight`.
+inline std::vector<std::vector<std::uint32_t> >
+unit_moves(std::size_t units, const std::map<std::pair<std::uint32_t, std::uint32_t>, Unit_link>& links)
+{
   std::vector<std::uint32_t> parent(units);
   std::iota(parent.begin(), parent.end(), std::uint32_t(0));
   auto find = [&](std::uint32_t v) {
@@ -212,9 +228,8 @@ inline std::vector<std::vector<std::uint32_t> > unit_moves(std::size_t units,
       v = parent[v] = parent[parent[v]];
     return v;
   };
-  const double least_weight = 3;
-  for(const auto& pair : between)
-    if(pair.second.first >= least_weight && pair.second.first > 2 * pair.second.second)
+  for(const auto& pair : links)
+    if(pair.second.one_face >= least_link_weight && pair.second.one_face > 2 * pair.second.two_sides)
     {
       const std::uint32_t a = find(pair.first.first), b = find(pair.first.second);
       if(a != b)
@@ -231,6 +246,161 @@ inline std::vector<std::vector<std::uint32_t> > unit_moves(std::size_t units,
     if(face.size() > 1)
       moves.push_back(face);
   return moves;
+}
+
+/// The pairs of units that are the two sides of a thin part or of a narrow
+/// gap: joined (`unit_links()`) by at least `least_link_weight` of edges
+/// that say so, and more than twice what joins them as one face.
+inline std::vector<std::pair<std::uint32_t, std::uint32_t> >
+two_sided_pairs(const std::map<std::pair<std::uint32_t, std::uint32_t>, Unit_link>& links)
+{
+  std::vector<std::pair<std::uint32_t, std::uint32_t> > pairs;
+  for(const auto& pair : links)
+    if(pair.second.two_sides >= least_link_weight && pair.second.two_sides > 2 * pair.second.one_face)
+      pairs.push_back(pair.first);
+  return pairs;
+}
+
+/// A chord between point `i` of one unit of a pair and point `j` of the
+/// other, across a thin part or a narrow gap, with its edge's weight, and
+/// the shares of the units in the winding number at its middle
+/// (`Patch_winding_numbers::shares_at()`).
+struct Wall_chord
+{
+  std::uint32_t i, j;
+  double weight;
+  std::vector<double> shares;
+};
+
+/// The chords of each pair of units of `pairs`: up to `most` of the `edges`
+/// between them that say they are the two sides of a thin part
+/// (`joins_two_sides()`), evenly spread over those in their order, with the
+/// winding number's shares at their middles.
+template <typename ConcurrencyTag>
+std::vector<std::vector<Wall_chord> >
+wall_chords(const Patch_winding_numbers& field, const std::vector<std::pair<std::uint32_t, std::uint32_t> >& pairs,
+            const std::vector<std::uint32_t>& unit_of_point, const std::vector<Eigen::Vector3d>& points,
+            const std::vector<Eigen::Vector3d>& normals, const std::vector<Signed_edge>& edges)
+{
+  const std::size_t most = 64;
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t> number;
+  for(std::size_t p = 0; p < pairs.size(); ++p)
+    number[pairs[p]] = p;
+  std::vector<std::vector<Wall_chord> > all(pairs.size()), chords(pairs.size());
+  for(const Signed_edge& e : edges)
+  {
+    const std::uint32_t a = unit_of_point[e.a], b = unit_of_point[e.b];
+    const auto found = number.find({ (std::min)(a, b), (std::max)(a, b) });
+    if(a != b && found != number.end() && joins_two_sides(e, normals))
+      all[found->second].push_back({ e.a, e.b, std::abs(e.weight), std::vector<double>() });
+  }
+  std::vector<std::size_t> numbers(pairs.size());
+  std::iota(numbers.begin(), numbers.end(), std::size_t(0));
+  CGAL::for_each<ConcurrencyTag>(numbers, [&](std::size_t p) {
+    const std::size_t count = (std::min)(most, all[p].size());
+    for(std::size_t t = 0; t < count; ++t)
+    {
+      Wall_chord c = all[p][t * all[p].size() / count];
+      c.shares = field.shares_at(0.5 * (points[c.i] + points[c.j]));
+      chords[p].push_back(std::move(c));
+    }
+    return true;
+  });
+  return chords;
+}
+
+/// How surely `x` says 0 or 1 rather than the other: nothing within a
+/// quarter of 1/2, in full at 0 or 1 and beyond.
+inline double how_sure(double x) { return (std::min)(1., (std::max)(0., 2 * std::abs(2 * x - 1) - 1)); }
+
+/// Turns over, greedily, the pairs of units of `field` that are the two
+/// sides of a thin part or of a narrow gap (`pairs`), both together, where
+/// the winding number between the two sides says so, updating `turned`.
+/// Turned together, the two sides of a wall swap which way they face, and
+/// the winding number away from the wall barely changes: the normals of
+/// both sides pointing into the wall, or both out of it, look alike from
+/// afar. Between the two sides, the share of the rest of the cloud tells:
+/// near 0, the sides are those of a thin part, whose normals point away
+/// from each other; near 1, those of a gap between two parts, whose normals
+/// point towards each other. The chords of each pair (`wall_chords()`) vote,
+/// weighed by their edges and by how sure that share is (`how_sure()`). The
+/// points' areas, taken from their nearest neighbors, shrink wherever the
+/// neighbors hold both sides, and the shares with them: between the fins of
+/// a finned part, the rest's share falls near 1/2, and only a few chords
+/// near the gap's mouth seem sure. So a pair is turned only where the votes
+/// weigh at least `least_sure` of its chords' weight, at least
+/// `least_disagreement` of the vote (from -1 to 1) is against the signs as
+/// they are, most against first, and the winding number away from the
+/// surface loses at most `least_gain` of what the pair moves
+/// (`units_to_turn()`): a pair that is no thin wall moves it. `oriented` are
+/// the normals under the signs the units were made from.
+template <typename ConcurrencyTag>
+void turn_thin_walls(Patch_winding_numbers& field, const std::vector<std::pair<std::uint32_t, std::uint32_t> >& pairs,
+                     const std::vector<std::vector<Wall_chord> >& chords, const std::vector<Eigen::Vector3d>& points,
+                     const std::vector<Eigen::Vector3d>& oriented, const std::vector<std::uint32_t>& unit_of_point,
+                     std::vector<char>& turned)
+{
+  const double least_disagreement = 0.5, least_sure = 0.5, least_gain = 0.25;
+  const std::size_t units = turned.size(), queries = field.size();
+  std::vector<double> total(queries, 0.);
+  for(std::size_t g = 0; g <= units; ++g)
+    for(std::size_t q = 0; q < queries; ++q)
+      total[q] += field.shares(g)[q];
+  auto sign = [&](std::uint32_t u) { return u < units && turned[u] ? -1. : 1.; };
+  std::vector<double> agreement(pairs.size(), 0.);
+  std::vector<char> allowed(pairs.size(), 0);
+  std::vector<std::size_t> numbers(pairs.size());
+  std::iota(numbers.begin(), numbers.end(), std::size_t(0));
+  for(std::size_t turns = 0; turns < pairs.size(); ++turns)
+  {
+    CGAL::for_each<ConcurrencyTag>(numbers, [&](std::size_t p) {
+      const std::uint32_t a = pairs[p].first, b = pairs[p].second;
+      double evidence = 0, vote = 0, weight = 0;
+      for(const Wall_chord& c : chords[p])
+      {
+        weight += c.weight;
+        const Eigen::Vector3d d = points[c.j] - points[c.i];
+        const double oi = sign(unit_of_point[c.i]) * oriented[c.i].dot(d),
+                     oj = sign(unit_of_point[c.j]) * oriented[c.j].dot(d);
+        if(!(oi * oj < 0)) // the two normals not opposite along the chord
+          continue;
+        double rest = 0;
+        for(std::uint32_t g = 0; g <= units; ++g)
+          if(g != a && g != b)
+            rest += sign(g) * c.shares[g];
+        const double sureness = how_sure(rest);
+        const bool away = oi < 0;
+        evidence += c.weight * sureness;
+        vote += (away == (rest < 0.5) ? 1 : -1) * c.weight * sureness;
+      }
+      agreement[p] = evidence > 0 && evidence >= least_sure * weight ? vote / evidence : 0.;
+      double gain = 0, moved = 0;
+      for(std::size_t q = 0; q < queries; ++q)
+      {
+        const double share = double(field.shares(a)[q]) + double(field.shares(b)[q]);
+        gain += off_solid(total[q]) - off_solid(total[q] - 2 * share);
+        moved += (std::max)(0., 2 * std::abs(share) - winding_tolerance);
+      }
+      allowed[p] = agreement[p] <= -least_disagreement && gain >= -least_gain * moved;
+      return true;
+    });
+    std::size_t best = pairs.size();
+    for(std::size_t p = 0; p < pairs.size(); ++p)
+      if(allowed[p] && (best == pairs.size() || agreement[p] < agreement[best]))
+        best = p;
+    if(best == pairs.size())
+      break;
+    for(std::uint32_t u : { pairs[best].first, pairs[best].second })
+    {
+      float* s = field.shares(u);
+      for(std::size_t q = 0; q < queries; ++q)
+      {
+        total[q] -= 2 * double(s[q]);
+        s[q] = -s[q];
+      }
+      turned[u] = char(!turned[u]);
+    }
+  }
 }
 
 /// Each patch that is not a unit of `units` and touches a patch that
@@ -313,10 +483,11 @@ inline void follow_turned_patches(const Sign_patches& patches, const Flip_units&
 /// `areas[v]` of the surface), checked as a whole: the cloud falls into
 /// patches that the signs orient as one (`sign_patches()`), of which the
 /// largest are turned over where the winding number of the whole cloud,
-/// away from the surface, says so (`units_to_turn()`); then each smaller
-/// patch next to a turned one follows the sum of the `edges` that join it
-/// to the rest, as the agglomeration would have joined it. Where nothing
-/// is turned, the signs are returned as they are.
+/// away from the surface, says so (`units_to_turn()`), and the two sides of
+/// a thin wall together where it says so between them (`turn_thin_walls()`);
+/// then each smaller patch next to a turned one follows the sum of the
+/// `edges` that join it to the rest, as the agglomeration would have joined
+/// it. Where nothing is turned, the signs are returned as they are.
 template <typename ConcurrencyTag>
 std::vector<int> global_signs(const std::vector<Eigen::Vector3d>& points, const std::vector<Eigen::Vector3d>& normals,
                               const std::vector<double>& areas, const std::vector<Signed_edge>& edges,
@@ -352,8 +523,12 @@ std::vector<int> global_signs(const std::vector<Eigen::Vector3d>& points, const 
     if(a != b && !within_face && e.weight != 0)
       unit_edges.push_back({ (std::min)(a, b), (std::max)(a, b), e.weight * signs[e.a] * signs[e.b] });
   }
-  const std::vector<char> turned = units_to_turn<ConcurrencyTag>(
-    field, unit_count, unit_moves(unit_count, unit_of_point, points, normals, edges, signs), unit_edges);
+  const auto links = unit_links(unit_count, unit_of_point, points, normals, edges, signs);
+  std::vector<char> turned =
+    units_to_turn<ConcurrencyTag>(field, unit_count, unit_moves(unit_count, links), unit_edges);
+  const auto pairs = two_sided_pairs(links);
+  const auto chords = wall_chords<ConcurrencyTag>(field, pairs, unit_of_point, points, normals, edges);
+  turn_thin_walls<ConcurrencyTag>(field, pairs, chords, points, oriented, unit_of_point, turned);
   if(std::find(turned.begin(), turned.end(), char(1)) == turned.end())
     return signs;
   std::vector<char> patch_turned(patches.count, 0);
