@@ -224,16 +224,6 @@ Oriented oriented(Surface s)
   return o;
 }
 
-// The signs with the points of face `f` turned over.
-std::vector<int> face_turned(const Oriented& o, int f)
-{
-  std::vector<int> signs = o.outward;
-  for(std::size_t v = 0; v < signs.size(); ++v)
-    if(o.surface.face[v] == f)
-      signs[v] = -signs[v];
-  return signs;
-}
-
 // The signs with the points of faces `faces` turned over where `where`
 // holds.
 std::vector<int> turned_where(const Oriented& o, const std::vector<int>& faces,
@@ -244,6 +234,12 @@ std::vector<int> turned_where(const Oriented& o, const std::vector<int>& faces,
     if(std::find(faces.begin(), faces.end(), o.surface.face[v]) != faces.end() && where(o.surface.points[v]))
       signs[v] = -signs[v];
   return signs;
+}
+
+// The signs with the points of face `f` turned over.
+std::vector<int> face_turned(const Oriented& o, int f)
+{
+  return turned_where(o, { f }, [](const Eigen::Vector3d&) { return true; });
 }
 
 // The number of points of each face whose sign is not the outward one.
@@ -345,10 +341,7 @@ TEST_CASE("Global signs: a face turned inward turns back, right signs and an ope
   {
     INFO("the tube's face " << f << " turned inward");
     const std::vector<int> signs = checked(pipe, face_turned(pipe, f));
-    std::vector<std::size_t> wrong(4, 0);
-    for(std::size_t v = 0; v < signs.size(); ++v)
-      wrong[pipe.surface.face[v]] += signs[v] != pipe.outward[v];
-    INFO("wrong on each face: " << wrong[0] << " " << wrong[1] << " " << wrong[2] << " " << wrong[3]);
+    INFO("wrong on each face: " << Catch::Detail::stringify(wrong_on_each_face(pipe, signs)));
     CHECK(signs == pipe.outward);
   }
   // Whichever way an open sheet is turned, nothing says the other is right.

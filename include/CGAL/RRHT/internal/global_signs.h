@@ -76,9 +76,71 @@ struct Unit_edge
   double weight;
 };
 
+/// A turn gains what it brings the winding number nearer those of a solid,
+/// and must gain at least this share of what it moves.
+constexpr double least_winding_gain = 0.25;
+
+/// The winding number of `field` at its queries, summed over its groups, as
+/// units (groups) are turned over; what turning some of them would gain,
+/// and what it would move.
+class Winding_sums
+{
+public:
+  Winding_sums(Patch_winding_numbers& field, std::size_t units) : m_field(field), m_total(field.size(), 0.)
+  {
+    for(std::size_t g = 0; g <= units; ++g)
+      for(std::size_t q = 0; q < m_total.size(); ++q)
+        m_total[q] += field.shares(g)[q];
+  }
+
+  /// How much nearer those of a solid (`off_solid()`, summed over the
+  /// queries) turning the units `members` over would bring the winding
+  /// number.
+  double gain(const std::vector<std::uint32_t>& members) const
+  {
+    double g = 0;
+    for(std::size_t q = 0; q < m_total.size(); ++q)
+      g += off_solid(m_total[q]) - off_solid(m_total[q] - 2 * share(members, q));
+    return g;
+  }
+
+  /// What turning the units `members` over moves: twice their share beyond
+  /// the tolerance, summed over the queries.
+  double moved(const std::vector<std::uint32_t>& members) const
+  {
+    double m = 0;
+    for(std::size_t q = 0; q < m_total.size(); ++q)
+      m += (std::max)(0., 2 * std::abs(share(members, q)) - winding_tolerance);
+    return m;
+  }
+
+  /// Turns the unit `u` over.
+  void turn(std::uint32_t u)
+  {
+    float* s = m_field.shares(u);
+    for(std::size_t q = 0; q < m_total.size(); ++q)
+    {
+      m_total[q] -= 2 * double(s[q]);
+      s[q] = -s[q];
+    }
+  }
+
+private:
+  double share(const std::vector<std::uint32_t>& members, std::size_t q) const
+  {
+    double sum = 0;
+    for(std::uint32_t u : members)
+      sum += m_field.shares(u)[q];
+    return sum;
+  }
+
+  Patch_winding_numbers& m_field;
+  std::vector<double> m_total;
+};
+
 /// The units of `field` (its groups) to turn over, greedily, each move
 /// one of `moves` (a list of units turned together: each unit alone, and
-/// the pieces of one smooth face), while a move gains at least `least_gain`
+/// the pieces of one smooth face), while a move gains at least `least_winding_gain`
 /// of what it moves: the gain is how much nearer those of a solid the move
 /// brings the winding number (`off_solid()`, summed over the queries), and
 /// what it moves, twice the move's share beyond the tolerance, summed. A
@@ -101,12 +163,8 @@ std::vector<char> units_to_turn(Patch_winding_numbers& field, std::size_t units,
                                 const std::vector<std::vector<std::uint32_t> >& moves,
                                 const std::vector<Unit_edge>& edges)
 {
-  const double least_gain = 0.25, least_moved = 1e-3, agreement_weight = 0.25;
-  const std::size_t queries = field.size();
-  std::vector<double> total(queries, 0.);
-  for(std::size_t g = 0; g <= units; ++g)
-    for(std::size_t q = 0; q < queries; ++q)
-      total[q] += field.shares(g)[q];
+  const double least_moved = 1e-3, agreement_weight = 0.25;
+  Winding_sums sums(field, units);
   std::vector<char> turned(units + 1, 0);
   std::vector<std::vector<char> > member(moves.size(), std::vector<char>(units + 1, 0));
   for(std::size_t m = 0; m < moves.size(); ++m)
@@ -115,13 +173,6 @@ std::vector<char> units_to_turn(Patch_winding_numbers& field, std::size_t units,
   std::vector<double> moved(moves.size(), 0.), gain(moves.size(), 0.), agreement(moves.size(), 0.);
   std::vector<std::size_t> numbers(moves.size());
   std::iota(numbers.begin(), numbers.end(), std::size_t(0));
-  // The share of move `m` at query `q`.
-  auto share = [&](std::size_t m, std::size_t q) {
-    double sum = 0;
-    for(std::uint32_t u : moves[m])
-      sum += field.shares(u)[q];
-    return sum;
-  };
   // How far the edges of each move agree with the signs as they are, from
   // -1 (all against) to 1.
   auto find_agreements = [&] {
@@ -138,18 +189,14 @@ std::vector<char> units_to_turn(Patch_winding_numbers& field, std::size_t units,
     });
   };
   CGAL::for_each<ConcurrencyTag>(numbers, [&](std::size_t m) {
-    for(std::size_t q = 0; q < queries; ++q)
-      moved[m] += (std::max)(0., 2 * std::abs(share(m, q)) - winding_tolerance);
+    moved[m] = sums.moved(moves[m]);
     return true;
   });
   find_agreements();
   for(std::size_t turns = 0; turns < 2 * moves.size(); ++turns)
   {
     CGAL::for_each<ConcurrencyTag>(numbers, [&](std::size_t m) {
-      double g = 0;
-      for(std::size_t q = 0; q < queries; ++q)
-        g += off_solid(total[q]) - off_solid(total[q] - 2 * share(m, q));
-      gain[m] = g;
+      gain[m] = sums.gain(moves[m]);
       return true;
     });
     std::size_t best = moves.size();
@@ -157,7 +204,7 @@ std::vector<char> units_to_turn(Patch_winding_numbers& field, std::size_t units,
     for(std::size_t m = 0; m < moves.size(); ++m)
     {
       const double score = gain[m] * (1 - agreement_weight * agreement[m]);
-      if(gain[m] > 0 && gain[m] >= least_gain * moved[m] && moved[m] >= least_moved * double(queries) &&
+      if(gain[m] > 0 && gain[m] >= least_winding_gain * moved[m] && moved[m] >= least_moved * double(field.size()) &&
          (best == moves.size() || score > best_score))
       {
         best = m;
@@ -168,12 +215,7 @@ std::vector<char> units_to_turn(Patch_winding_numbers& field, std::size_t units,
       break;
     for(std::uint32_t u : moves[best])
     {
-      float* s = field.shares(u);
-      for(std::size_t q = 0; q < queries; ++q)
-      {
-        total[q] -= 2 * double(s[q]);
-        s[q] = -s[q];
-      }
+      sums.turn(u);
       turned[u] = char(!turned[u]);
     }
     find_agreements();
@@ -331,7 +373,7 @@ inline double how_sure(double x) { return (std::min)(1., (std::max)(0., 2 * std:
 /// weigh at least `least_sure` of its chords' weight, at least
 /// `least_disagreement` of the vote (from -1 to 1) is against the signs as
 /// they are, most against first, and the winding number away from the
-/// surface loses at most `least_gain` of what the pair moves
+/// surface loses at most `least_winding_gain` of what the pair moves
 /// (`units_to_turn()`): a pair that is no thin wall moves it. `oriented` are
 /// the normals under the signs the units were made from.
 template <typename ConcurrencyTag>
@@ -340,17 +382,20 @@ void turn_thin_walls(Patch_winding_numbers& field, const std::vector<std::pair<s
                      const std::vector<Eigen::Vector3d>& oriented, const std::vector<std::uint32_t>& unit_of_point,
                      std::vector<char>& turned)
 {
-  const double least_disagreement = 0.5, least_sure = 0.5, least_gain = 0.25;
-  const std::size_t units = turned.size(), queries = field.size();
-  std::vector<double> total(queries, 0.);
-  for(std::size_t g = 0; g <= units; ++g)
-    for(std::size_t q = 0; q < queries; ++q)
-      total[q] += field.shares(g)[q];
+  const double least_disagreement = 0.5, least_sure = 0.5;
+  const std::size_t units = turned.size();
+  Winding_sums sums(field, units);
   auto sign = [&](std::uint32_t u) { return u < units && turned[u] ? -1. : 1.; };
-  std::vector<double> agreement(pairs.size(), 0.);
+  std::vector<std::vector<std::uint32_t> > members(pairs.size());
+  std::vector<double> agreement(pairs.size(), 0.), moved(pairs.size(), 0.);
   std::vector<char> allowed(pairs.size(), 0);
   std::vector<std::size_t> numbers(pairs.size());
   std::iota(numbers.begin(), numbers.end(), std::size_t(0));
+  CGAL::for_each<ConcurrencyTag>(numbers, [&](std::size_t p) {
+    members[p] = { pairs[p].first, pairs[p].second };
+    moved[p] = sums.moved(members[p]);
+    return true;
+  });
   for(std::size_t turns = 0; turns < pairs.size(); ++turns)
   {
     CGAL::for_each<ConcurrencyTag>(numbers, [&](std::size_t p) {
@@ -374,14 +419,7 @@ void turn_thin_walls(Patch_winding_numbers& field, const std::vector<std::pair<s
         vote += (away == (rest < 0.5) ? 1 : -1) * c.weight * sureness;
       }
       agreement[p] = evidence > 0 && evidence >= least_sure * weight ? vote / evidence : 0.;
-      double gain = 0, moved = 0;
-      for(std::size_t q = 0; q < queries; ++q)
-      {
-        const double share = double(field.shares(a)[q]) + double(field.shares(b)[q]);
-        gain += off_solid(total[q]) - off_solid(total[q] - 2 * share);
-        moved += (std::max)(0., 2 * std::abs(share) - winding_tolerance);
-      }
-      allowed[p] = agreement[p] <= -least_disagreement && gain >= -least_gain * moved;
+      allowed[p] = agreement[p] <= -least_disagreement && sums.gain(members[p]) >= -least_winding_gain * moved[p];
       return true;
     });
     std::size_t best = pairs.size();
@@ -390,14 +428,9 @@ void turn_thin_walls(Patch_winding_numbers& field, const std::vector<std::pair<s
         best = p;
     if(best == pairs.size())
       break;
-    for(std::uint32_t u : { pairs[best].first, pairs[best].second })
+    for(std::uint32_t u : members[best])
     {
-      float* s = field.shares(u);
-      for(std::size_t q = 0; q < queries; ++q)
-      {
-        total[q] -= 2 * double(s[q]);
-        s[q] = -s[q];
-      }
+      sums.turn(u);
       turned[u] = char(!turned[u]);
     }
   }
