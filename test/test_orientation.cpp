@@ -7,6 +7,7 @@
 #include <CGAL/rrht_estimate_normals.h>
 #include <CGAL/rrht_orient_normals.h>
 #include <CGAL/RRHT/internal/Wedge.h>
+#include <CGAL/RRHT/internal/relaxed_signs.h>
 
 #include "orientation_scores.h"
 #include "shapes.h"
@@ -18,6 +19,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <random>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -236,13 +238,66 @@ TEST_CASE("Relaxed signs: a wrongly joined part of a cluster flips back, cluster
   for(std::size_t v = 8; v < 13; ++v)
     signs[v] = -1;
   const std::vector<int> relaxed =
-    CGAL::RRHT::internal::relaxed_signs(20, edges, std::vector<std::uint32_t>(20, 0), signs);
+    CGAL::RRHT::internal::relaxed_signs<CGAL::Sequential_tag>(20, edges, std::vector<std::uint32_t>(20, 0), signs);
   CHECK(relaxed == std::vector<int>(20, 1));
   // The same ring as two clusters, 8 to 12 apart: each keeps its sign.
   std::vector<std::uint32_t> cluster(20, 0);
   for(std::size_t v = 8; v < 13; ++v)
     cluster[v] = 1;
-  CHECK(CGAL::RRHT::internal::relaxed_signs(20, edges, cluster, signs) == signs);
+  CHECK(CGAL::RRHT::internal::relaxed_signs<CGAL::Sequential_tag>(20, edges, cluster, signs) == signs);
+}
+
+TEST_CASE("Relaxed signs: the matrix's product is Eigen's sparse product, bit for bit, on any number of threads",
+          "[orientation]")
+{
+  using CGAL::RRHT::internal::Signed_edge;
+  // A random graph over three blocks of rows, some edges left out, some
+  // vertices without any.
+  const std::size_t size = 10000;
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> weight(-1, 1);
+  // Each pair once, as orientation_edges() gives them.
+  std::vector<Signed_edge> edges;
+  for(std::uint32_t a = 0; a < size; ++a)
+    for(std::uint32_t b = a + 1 + std::uint32_t(random() % 40); b < size; b += 1 + std::uint32_t(random() % 2000))
+      edges.push_back({ a, b, weight(random) });
+  auto holds = [](const Signed_edge& e) { return (e.a + e.b) % 7 != 0; };
+  std::vector<double> diagonal(size);
+  std::vector<Eigen::Triplet<double> > entries;
+  for(const Signed_edge& e : edges)
+    if(holds(e))
+    {
+      entries.emplace_back(Eigen::Index(e.a), Eigen::Index(e.b), -e.weight);
+      entries.emplace_back(Eigen::Index(e.b), Eigen::Index(e.a), -e.weight);
+    }
+  for(std::size_t v = 0; v < size; ++v)
+  {
+    diagonal[v] = 9 + weight(random);
+    entries.emplace_back(Eigen::Index(v), Eigen::Index(v), diagonal[v]);
+  }
+  Eigen::SparseMatrix<double, Eigen::RowMajor> eigen{ Eigen::Index(size), Eigen::Index(size) };
+  eigen.setFromTriplets(entries.begin(), entries.end());
+  Eigen::VectorXd x(size);
+  for(std::size_t v = 0; v < size; ++v)
+    x[Eigen::Index(v)] = weight(random);
+  const Eigen::VectorXd expected = eigen * x;
+  const CGAL::RRHT::internal::Relaxation_matrix<CGAL::Sequential_tag> sequential(edges, holds, diagonal);
+  CHECK((sequential * x).eval() == expected);
+#ifdef CGAL_LINKED_WITH_TBB
+  const CGAL::RRHT::internal::Relaxation_matrix<CGAL::Parallel_tag> parallel(edges, holds, diagonal);
+  CHECK((parallel * x).eval() == expected);
+  // And so the relaxed signs.
+  std::vector<int> signs(size);
+  std::vector<std::uint32_t> cluster(size);
+  for(std::size_t v = 0; v < size; ++v)
+  {
+    signs[v] = random() % 2 ? 1 : -1;
+    cluster[v] = std::uint32_t(v % 3);
+  }
+  const std::vector<int> relaxed = CGAL::RRHT::internal::relaxed_signs<CGAL::Parallel_tag>(size, edges, cluster, signs);
+  CHECK(relaxed != signs);
+  CHECK(relaxed == CGAL::RRHT::internal::relaxed_signs<CGAL::Sequential_tag>(size, edges, cluster, signs));
+#endif
 }
 
 TEST_CASE("Signed clusters: a point at a block's edge is joined by all its evidence", "[orientation]")

@@ -124,12 +124,28 @@ private:
         const double s = sum[b] - sum[a];
         return (std::max)(0., sum2[b] - sum2[a] - s * s / double(b - a));
       };
+      // Those of the first and of the last group, once for all the splits.
+      std::vector<double> head(n + 1, 0.), tail(n + 1, 0.);
+      for(std::size_t s = 1; s < n; ++s)
+      {
+        head[s] = deviation(0, s);
+        tail[s] = deviation(s, n);
+      }
       double best = -1;
       std::size_t first = 0, second = n;
+      // A group's deviation only grows with it: once the first group's, or
+      // the first two groups', reach the best cost, the splits that follow
+      // cost more.
       for(std::size_t s1 = min_group; s1 + min_group * std::size_t(groups - 1) <= n; ++s1)
+      {
+        if(best >= 0 && head[s1] >= best)
+          break;
         for(std::size_t s2 = (groups == 2 ? n : s1 + min_group); s2 <= n && (groups == 2 || s2 + min_group <= n); ++s2)
         {
-          const double cost = deviation(0, s1) + deviation(s1, s2) + (s2 < n ? deviation(s2, n) : 0.);
+          const double first_two = head[s1] + (groups == 2 ? tail[s1] : deviation(s1, s2));
+          if(groups == 3 && best >= 0 && first_two >= best)
+            break;
+          const double cost = first_two + (s2 < n ? tail[s2] : 0.);
           if(best < 0 || cost < best)
           {
             best = cost;
@@ -137,6 +153,7 @@ private:
             second = s2;
           }
         }
+      }
       found = true;
       const std::size_t bounds[4] = { 0, first, second, n };
       for(int g = 0; g < groups; ++g)

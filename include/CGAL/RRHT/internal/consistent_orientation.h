@@ -78,7 +78,7 @@ std::vector<int> consistent_orientation(const Neighbor_search& search, const std
   for(std::size_t c = 0; c < members.size(); ++c)
     for(std::uint32_t v : members[c])
       signs[v] *= outward[c];
-  signs = relaxed_signs(size, edges, cluster, std::move(signs));
+  signs = relaxed_signs<ConcurrencyTag>(size, edges, cluster, std::move(signs));
   signs = global_signs<ConcurrencyTag>(points, normals, areas, edges, std::move(signs));
   for(std::size_t v = 0; v < size; ++v)
     signs[v] *= canonical[v];
