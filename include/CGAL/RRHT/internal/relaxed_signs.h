@@ -74,10 +74,12 @@ public:
   /// The matrix of the edges `edges` (each pair of vertices once) where
   /// `holds(edge)`, with the diagonal `diagonal`.
   template <typename Holds>
-  Relaxation_matrix(const std::vector<Signed_edge>& edges, Holds holds, const std::vector<double>& diagonal)
-    : m_first(diagonal.size() + 1, 0), m_diagonal(diagonal)
+  Relaxation_matrix(const std::vector<Signed_edge>& edges, Holds holds, std::vector<double> diagonal)
+    : m_first(diagonal.size() + 1, 0), m_diagonal(std::move(diagonal)),
+      m_blocks((m_diagonal.size() + block_rows - 1) / block_rows)
   {
-    const std::size_t size = diagonal.size();
+    const std::size_t size = m_diagonal.size();
+    std::iota(m_blocks.begin(), m_blocks.end(), std::size_t(0));
     for(const Signed_edge& e : edges)
       if(holds(e))
         ++m_first[e.a + 1], ++m_first[e.b + 1];
@@ -93,7 +95,7 @@ public:
       }
     for(std::size_t v = 0; v < size; ++v)
     {
-      m_entries[next[v]] = { std::uint32_t(v), diagonal[v] };
+      m_entries[next[v]] = { std::uint32_t(v), m_diagonal[v] };
       // By column, in place and stable: the rows are short.
       for(std::size_t t = m_first[v] + 1; t < m_first[v + 1]; ++t)
         for(std::size_t u = t; u > m_first[v] && m_entries[u].column < m_entries[u - 1].column; --u)
@@ -114,11 +116,9 @@ public:
   template <typename Destination, typename Rhs>
   void add_product(Destination& destination, const Rhs& x, double alpha) const
   {
-    const std::size_t size = m_diagonal.size(), block = 4096;
-    std::vector<std::size_t> blocks((size + block - 1) / block);
-    std::iota(blocks.begin(), blocks.end(), std::size_t(0));
-    CGAL::for_each<ConcurrencyTag>(blocks, [&](std::size_t b) {
-      for(std::size_t v = b * block; v < (std::min)(size, (b + 1) * block); ++v)
+    const std::size_t size = m_diagonal.size();
+    CGAL::for_each<ConcurrencyTag>(m_blocks, [&](std::size_t b) {
+      for(std::size_t v = b * block_rows; v < (std::min)(size, (b + 1) * block_rows); ++v)
       {
         double sum = 0;
         for(std::size_t t = m_first[v]; t < m_first[v + 1]; ++t)
@@ -137,9 +137,11 @@ private:
     std::uint32_t column;
     double value;
   };
+  static constexpr std::size_t block_rows = 4096;
   std::vector<std::size_t> m_first; // each row's first entry
   std::vector<Entry> m_entries;
   std::vector<double> m_diagonal;
+  std::vector<std::size_t> m_blocks; // the numbers of the blocks of rows, for CGAL::for_each
 };
 
 /// Eigen's diagonal preconditioner, read from the diagonal of a
@@ -216,7 +218,7 @@ std::vector<int> relaxed_signs(std::size_t size, const std::vector<Signed_edge>&
     target[Eigen::Index(v)] = anchor * d * signs[v];
     guess[Eigen::Index(v)] = signs[v];
   }
-  const Relaxation_matrix<ConcurrencyTag> matrix(edges, joins, diagonal);
+  const Relaxation_matrix<ConcurrencyTag> matrix(edges, joins, std::move(diagonal));
   Eigen::ConjugateGradient<Relaxation_matrix<ConcurrencyTag>, Eigen::Lower | Eigen::Upper, Relaxation_preconditioner>
     solver;
   solver.setTolerance(tolerance);
