@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <numeric>
@@ -40,36 +41,56 @@ namespace internal {
 /// whose nearest point lies at least `clearance` finest cells away: the
 /// winding number is evaluated away from the surface, where a patch that is
 /// turned over changes it by its whole share, while a step either side of a
-/// point would see the patch's own share turn with it. Each query's sums
-/// are taken in the same order whatever the number of threads. It keeps
-/// references to `points`, `normals` and `areas`, which must outlive it.
+/// point would see the patch's own share turn with it. Where the surface
+/// bounds a space narrower than that (a small bore, a slot, a wall), no
+/// cell is that clear: the queries are then also the centers of the
+/// largest empty balls that touch the points `seeds` on either side
+/// (`medial_center()`), their sums taken point by point near them. Each
+/// query's sums are taken in the same order whatever the number of
+/// threads. It keeps references to `points`, `normals` and `areas`, which
+/// must outlive it.
 class Patch_winding_numbers
 {
 public:
   template <typename ConcurrencyTag>
   Patch_winding_numbers(const std::vector<Eigen::Vector3d>& points, const std::vector<Eigen::Vector3d>& normals,
                         const std::vector<double>& areas, const std::vector<std::uint32_t>& group, std::size_t groups,
-                        ConcurrencyTag)
+                        ConcurrencyTag, const std::vector<std::uint32_t>& seeds = std::vector<std::uint32_t>())
     : m_groups(groups), m_points(&points), m_normals(&normals), m_areas(&areas)
   {
     if(!bound(points))
       return;
     build_levels(points, normals, areas, group);
     place_queries(points);
+    const std::size_t grid_queries = m_queries.size();
+    place_medial_queries<ConcurrencyTag>(seeds);
     m_shares.assign(m_queries.size() * (m_groups + 1), 0.f);
     std::vector<std::size_t> queries(m_queries.size());
     std::iota(queries.begin(), queries.end(), std::size_t(0));
     CGAL::for_each<ConcurrencyTag>(queries, [&](std::size_t q) {
       std::vector<double> sums(m_groups + 1, 0.);
-      add_shares(m_queries[q], 0, 0, sums);
+      add_shares(m_queries[q], 0, 0, sums, q >= grid_queries);
       for(std::size_t g = 0; g <= m_groups; ++g)
         m_shares[g * m_queries.size() + q] = float(sums[g]);
       return true;
     });
   }
 
-  /// The number of query points.
+  /// The number of query points: the grid's (`grid_size()`), then the
+  /// medial ones.
   std::size_t size() const { return m_queries.size(); }
+  std::size_t grid_size() const { return m_queries.size() - m_medial_touches.size(); }
+
+  /// A medial query: the center of an empty ball, the seed it touches and
+  /// the point across the space from the seed that the ball touches too.
+  struct Medial_touch
+  {
+    std::uint32_t seed, touched;
+    Eigen::Vector3d center;
+  };
+
+  /// The medial queries, in their order, after the grid's.
+  const std::vector<Medial_touch>& medial_touches() const { return m_medial_touches; }
 
   /// The query points.
   const std::vector<Eigen::Vector3d>& queries() const { return m_queries; }
@@ -95,6 +116,9 @@ private:
   static constexpr unsigned int depth = 6;
   static constexpr double opening = 0.5;
   static constexpr int clearance = 3;
+  // Nearer the points than this many spacings (the square root of a
+  // point's area), the sum over the points strays from the integral.
+  static constexpr double medial_spacings = 2;
 
   // The moments of one group's points in one cell; at the finest level,
   // also where its points are in `m_order`.
@@ -228,6 +252,102 @@ private:
         }
   }
 
+  // The center of the largest ball empty of points that touches the point
+  // `v` on the side of `sense` times its normal, shrunk from the grid's
+  // clearance (the shrinking ball of Ma, Bae and Choi 2012): while
+  // a point lies inside, the ball becomes the one tangent at `v` through
+  // the nearest such point, which it then `touched`. The points within
+  // `least` of `v` are its own surface, whose noise would shrink the ball
+  // to nothing. False where the ball keeps the clearance (the grid's
+  // queries see there) or shrinks below `least`.
+  bool medial_center(std::uint32_t v, double sense, double least, Eigen::Vector3d& center, std::uint32_t& touched) const
+  {
+    const Eigen::Vector3d& p = (*m_points)[v];
+    const Eigen::Vector3d m = sense * (*m_normals)[v];
+    const double most = clearance * m_side / double(1u << depth);
+    double radius = most;
+    for(int step = 0; step < 32; ++step)
+    {
+      center = p + radius * m;
+      std::uint32_t inside = 0;
+      if(!nearest_inside(center, radius, p, least, inside))
+        return radius < most;
+      const Eigen::Vector3d d = (*m_points)[inside] - p;
+      const double along = m.dot(d);
+      if(!(along > 0))
+        return false;
+      radius = d.squaredNorm() / (2 * along);
+      touched = inside;
+      if(radius < least)
+        return false;
+    }
+    return false;
+  }
+
+  // The point nearest to `c` strictly within `radius` of it, of those at
+  // least `least` from `p`, from the finest cells that the ball meets; the
+  // first of equal ones in the cells' order. False if none.
+  bool nearest_inside(const Eigen::Vector3d& c, double radius, const Eigen::Vector3d& p, double least,
+                      std::uint32_t& nearest) const
+  {
+    const std::vector<Cell_group>& finest = m_levels[depth];
+    std::uint32_t lo[3], hi[3];
+    for(int a = 0; a < 3; ++a)
+    {
+      lo[a] = cell_coordinate(c[a] - radius, m_corner[a]);
+      hi[a] = cell_coordinate(c[a] + radius, m_corner[a]);
+    }
+    double best = radius * radius;
+    bool found = false;
+    for(std::uint32_t z = lo[2]; z <= hi[2]; ++z)
+      for(std::uint32_t y = lo[1]; y <= hi[1]; ++y)
+        for(std::uint32_t x = lo[0]; x <= hi[0]; ++x)
+        {
+          const std::uint32_t code = morton(x, y, z);
+          for(auto it = std::lower_bound(finest.begin(), finest.end(), code,
+                                         [](const Cell_group& cell, std::uint32_t value) { return cell.code < value; });
+              it != finest.end() && it->code == code; ++it)
+            for(std::uint32_t t = it->first; t < it->first + it->count; ++t)
+            {
+              const std::uint32_t u = m_order[t];
+              const Eigen::Vector3d& q = (*m_points)[u];
+              const double d = (q - c).squaredNorm();
+              if(d < best && (q - p).squaredNorm() >= least * least)
+              {
+                best = d;
+                nearest = u;
+                found = true;
+              }
+            }
+        }
+    return found;
+  }
+
+  // Appends the medial centers (`medial_center()`) of the points `seeds`,
+  // both sides of each in turn, where they lie `medial_spacings` from
+  // every point or more.
+  template <typename ConcurrencyTag>
+  void place_medial_queries(const std::vector<std::uint32_t>& seeds)
+  {
+    std::vector<Eigen::Vector3d> centers(2 * seeds.size());
+    std::vector<std::uint32_t> touched(2 * seeds.size(), 0);
+    std::vector<char> found(2 * seeds.size(), 0);
+    std::vector<std::size_t> numbers(centers.size());
+    std::iota(numbers.begin(), numbers.end(), std::size_t(0));
+    CGAL::for_each<ConcurrencyTag>(numbers, [&](std::size_t i) {
+      const std::uint32_t v = seeds[i / 2];
+      found[i] = medial_center(v, i % 2 ? -1. : 1., medial_spacings * std::sqrt((*m_areas)[v]), centers[i],
+                                touched[i]);
+      return true;
+    });
+    for(std::size_t i = 0; i < centers.size(); ++i)
+      if(found[i])
+      {
+        m_queries.push_back(centers[i]);
+        m_medial_touches.push_back({ seeds[i / 2], touched[i], centers[i] });
+      }
+  }
+
   // Adds the shares of the cell of `code` at `level` at query `q` to `sums`;
   // with `point_by_point`, the finest cells near `q` point by point.
   void add_shares(const Eigen::Vector3d& q, unsigned int level, std::uint32_t code, std::vector<double>& sums,
@@ -274,6 +394,7 @@ private:
   Eigen::Vector3d m_corner = Eigen::Vector3d::Zero();
   std::vector<std::vector<Cell_group> > m_levels; // by level, each sorted by code then group
   std::vector<Eigen::Vector3d> m_queries;
+  std::vector<Medial_touch> m_medial_touches;
   const std::vector<Eigen::Vector3d>* m_points = nullptr; // the arrays given, for the point-by-point sums
   const std::vector<Eigen::Vector3d>* m_normals = nullptr;
   const std::vector<double>* m_areas = nullptr;

@@ -39,31 +39,54 @@ inline double off_solid(double w)
   return (std::max)(0., (std::min)(std::abs(w), std::abs(w - 1)) - winding_tolerance);
 }
 
-/// The patches that `global_signs()` may turn over: the `most` largest of
-/// at least `least` points (largest first, then by number), each numbered
-/// from 0 in `unit`; the others get `units.size()`.
+/// The pieces of surface that `global_signs()` may turn over, its units:
+/// the patches of at least `least` points (`size[p]` for patch `p`), and
+/// the sets of smaller patches that the signs join (`small_sets`, lists of
+/// patches: a small bore, cut into pieces of a few points each) where they
+/// hold at least `least` points together; the `most` largest (largest first, then in that
+/// order), each numbered from 0 in `unit`, the other patches getting
+/// `units.size()`.
 struct Flip_units
 {
-  std::vector<std::uint32_t> patches; // the patch of each unit
-  std::vector<std::uint32_t> unit;    // the unit of each patch
+  std::vector<std::vector<std::uint32_t> > patches; // the patches of each unit
+  std::vector<std::uint32_t> unit;                  // the unit of each patch
 };
 
-inline Flip_units flip_units(const Sign_patches& patches, std::size_t least, std::size_t most)
+inline Flip_units flip_units(const Sign_patches& patches, const std::vector<std::size_t>& size,
+                             const std::vector<std::vector<std::uint32_t> >& small_sets, std::size_t least,
+                             std::size_t most)
 {
-  std::vector<std::size_t> size(patches.count, 0);
-  for(std::uint32_t p : patches.patch)
-    ++size[p];
-  Flip_units units;
+  std::vector<std::vector<std::uint32_t> > candidates;
+  std::vector<std::size_t> points;
   for(std::size_t p = 0; p < patches.count; ++p)
     if(size[p] >= least)
-      units.patches.push_back(std::uint32_t(p));
-  std::stable_sort(units.patches.begin(), units.patches.end(),
-                   [&](std::uint32_t x, std::uint32_t y) { return size[x] > size[y]; });
-  if(units.patches.size() > most)
-    units.patches.resize(most);
+    {
+      candidates.push_back({ std::uint32_t(p) });
+      points.push_back(size[p]);
+    }
+  for(const std::vector<std::uint32_t>& set : small_sets)
+  {
+    std::size_t total = 0;
+    for(std::uint32_t p : set)
+      total += size[p];
+    if(total >= least)
+    {
+      candidates.push_back(set);
+      points.push_back(total);
+    }
+  }
+  std::vector<std::size_t> order(candidates.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return points[x] > points[y]; });
+  if(order.size() > most)
+    order.resize(most);
+  Flip_units units;
+  for(std::size_t c : order)
+    units.patches.push_back(std::move(candidates[c]));
   units.unit.assign(patches.count, std::uint32_t(units.patches.size()));
   for(std::size_t u = 0; u < units.patches.size(); ++u)
-    units.unit[units.patches[u]] = std::uint32_t(u);
+    for(std::uint32_t p : units.patches[u])
+      units.unit[p] = std::uint32_t(u);
   return units;
 }
 
@@ -80,13 +103,22 @@ struct Unit_edge
 /// and must gain at least this share of what it moves.
 constexpr double least_winding_gain = 0.25;
 
+/// A turn must move at least as much as a whole share at four queries.
+constexpr double least_moved = 4 * 2.;
+
 /// The winding number of `field` at its queries, summed over its groups, as
 /// units (groups) are turned over; what turning some of them would gain,
-/// and what it would move.
+/// and what it would move, at the queries that judge them: the grid's,
+/// where the turn moves enough there (`least_moved`), and all of them,
+/// medial ones too, only where it does not. A face that the grid sees is
+/// judged on a field that is only what the grid tells, and the medial
+/// queries, inside a part thinner than the grid's clearance as well as in a
+/// narrow space, judge only what the grid cannot see: a small bore.
 class Winding_sums
 {
 public:
-  Winding_sums(Patch_winding_numbers& field, std::size_t units) : m_field(field), m_total(field.size(), 0.)
+  Winding_sums(Patch_winding_numbers& field, std::size_t units)
+    : m_field(field), m_total(field.size(), 0.), m_grid(field.grid_size())
   {
     for(std::size_t g = 0; g <= units; ++g)
       for(std::size_t q = 0; q < m_total.size(); ++q)
@@ -94,24 +126,28 @@ public:
   }
 
   /// How much nearer those of a solid (`off_solid()`, summed over the
-  /// queries) turning the units `members` over would bring the winding
-  /// number.
+  /// queries that judge them) turning the units `members` over would bring
+  /// the winding number: credited only where it moves it by more than the
+  /// tolerance (elsewhere, a turn would only make up for the errors of the
+  /// sum, the points' areas being estimates, by a little at many queries),
+  /// debited wherever it moves it away.
   double gain(const std::vector<std::uint32_t>& members) const
   {
     double g = 0;
-    for(std::size_t q = 0; q < m_total.size(); ++q)
-      g += off_solid(m_total[q]) - off_solid(m_total[q] - 2 * share(members, q));
+    for(std::size_t q = 0, end = judging(members); q < end; ++q)
+    {
+      const double s = share(members, q);
+      const double change = off_solid(m_total[q]) - off_solid(m_total[q] - 2 * s);
+      g += 2 * std::abs(s) > winding_tolerance ? change : (std::min)(0., change);
+    }
     return g;
   }
 
   /// What turning the units `members` over moves: twice their share beyond
-  /// the tolerance, summed over the queries.
+  /// the tolerance, summed over the queries that judge them.
   double moved(const std::vector<std::uint32_t>& members) const
   {
-    double m = 0;
-    for(std::size_t q = 0; q < m_total.size(); ++q)
-      m += (std::max)(0., 2 * std::abs(share(members, q)) - winding_tolerance);
-    return m;
+    return moved(members, judging(members));
   }
 
   /// Turns the unit `u` over.
@@ -134,16 +170,33 @@ private:
     return sum;
   }
 
+  double moved(const std::vector<std::uint32_t>& members, std::size_t end) const
+  {
+    double m = 0;
+    for(std::size_t q = 0; q < end; ++q)
+      m += (std::max)(0., 2 * std::abs(share(members, q)) - winding_tolerance);
+    return m;
+  }
+
+  // The end of the queries that judge a turn of `members`.
+  std::size_t judging(const std::vector<std::uint32_t>& members) const
+  {
+    return moved(members, m_grid) >= least_moved ? m_grid : m_total.size();
+  }
+
   Patch_winding_numbers& m_field;
   std::vector<double> m_total;
+  std::size_t m_grid;
 };
 
 /// The units of `field` (its groups) to turn over, greedily, each move
-/// one of `moves` (a list of units turned together: each unit alone, and
-/// the pieces of one smooth face), while a move gains at least `least_winding_gain`
-/// of what it moves: the gain is how much nearer those of a solid the move
-/// brings the winding number (`off_solid()`, summed over the queries), and
-/// what it moves, twice the move's share beyond the tolerance, summed. A
+/// one of `moves` (a list of units turned together: each unit alone, the
+/// pieces of one smooth face), while a move
+/// gains at least `least_winding_gain` of what it moves, and moves at least
+/// as much as a whole share at four queries: the gain is how much nearer
+/// those of a solid the move brings the winding number (`off_solid()`,
+/// summed over the queries), and what it moves, twice the move's share
+/// beyond the tolerance, summed. A
 /// face turned inward leaves the winding number off those of a solid over
 /// the region it sees, and turning it back makes it whole; turning over a
 /// patch of an open surface, whose winding number is fractional anyway,
@@ -163,7 +216,7 @@ std::vector<char> units_to_turn(Patch_winding_numbers& field, std::size_t units,
                                 const std::vector<std::vector<std::uint32_t> >& moves,
                                 const std::vector<Unit_edge>& edges)
 {
-  const double least_moved = 1e-3, agreement_weight = 0.25;
+  const double agreement_weight = 0.25;
   Winding_sums sums(field, units);
   std::vector<char> turned(units + 1, 0);
   std::vector<std::vector<char> > member(moves.size(), std::vector<char>(units + 1, 0));
@@ -204,7 +257,7 @@ std::vector<char> units_to_turn(Patch_winding_numbers& field, std::size_t units,
     for(std::size_t m = 0; m < moves.size(); ++m)
     {
       const double score = gain[m] * (1 - agreement_weight * agreement[m]);
-      if(gain[m] > 0 && gain[m] >= least_winding_gain * moved[m] && moved[m] >= least_moved * double(field.size()) &&
+      if(gain[m] > 0 && gain[m] >= least_winding_gain * moved[m] && moved[m] >= least_moved &&
          (best == moves.size() || score > best_score))
       {
         best = m;
@@ -256,6 +309,34 @@ unit_links(std::size_t units, const std::vector<std::uint32_t>& unit_of_point,
   return links;
 }
 
+/// The sets of two or more of `count` elements that the pairs `joined`
+/// join, each in increasing order, the sets in the order of their first
+/// element.
+inline std::vector<std::vector<std::uint32_t> >
+joined_sets(std::size_t count, const std::vector<std::pair<std::uint32_t, std::uint32_t> >& joined)
+{
+  std::vector<std::uint32_t> parent(count);
+  std::iota(parent.begin(), parent.end(), std::uint32_t(0));
+  auto find = [&](std::uint32_t v) {
+    while(parent[v] != v)
+      v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for(const auto& pair : joined)
+  {
+    const std::uint32_t a = find(pair.first), b = find(pair.second);
+    if(a != b)
+      parent[(std::max)(a, b)] = (std::min)(a, b);
+  }
+  std::vector<std::vector<std::uint32_t> > members(count), sets;
+  for(std::uint32_t u = 0; u < count; ++u)
+    members[find(u)].push_back(u);
+  for(std::vector<std::uint32_t>& set : members)
+    if(set.size() > 1)
+      sets.push_back(std::move(set));
+  return sets;
+}
+
 /// The moves of `units_to_turn()`: each unit alone, then the pieces of each
 /// smooth face together, units joined (`unit_links()`) by more weight of
 /// edges that join one face than twice the weight of those that say they
@@ -263,30 +344,15 @@ unit_links(std::size_t units, const std::vector<std::uint32_t>& unit_of_point,
 inline std::vector<std::vector<std::uint32_t> >
 unit_moves(std::size_t units, const std::map<std::pair<std::uint32_t, std::uint32_t>, Unit_link>& links)
 {
-  std::vector<std::uint32_t> parent(units);
-  std::iota(parent.begin(), parent.end(), std::uint32_t(0));
-  auto find = [&](std::uint32_t v) {
-    while(parent[v] != v)
-      v = parent[v] = parent[parent[v]];
-    return v;
-  };
+  std::vector<std::pair<std::uint32_t, std::uint32_t> > joined;
   for(const auto& pair : links)
     if(pair.second.one_face >= least_link_weight && pair.second.one_face > 2 * pair.second.two_sides)
-    {
-      const std::uint32_t a = find(pair.first.first), b = find(pair.first.second);
-      if(a != b)
-        parent[(std::max)(a, b)] = (std::min)(a, b);
-    }
+      joined.push_back(pair.first);
   std::vector<std::vector<std::uint32_t> > moves;
-  std::vector<std::vector<std::uint32_t> > faces(units);
   for(std::uint32_t u = 0; u < units; ++u)
-  {
     moves.push_back({ u });
-    faces[find(u)].push_back(u);
-  }
-  for(const std::vector<std::uint32_t>& face : faces)
-    if(face.size() > 1)
-      moves.push_back(face);
+  for(std::vector<std::uint32_t>& face : joined_sets(units, joined))
+    moves.push_back(std::move(face));
   return moves;
 }
 
@@ -512,11 +578,69 @@ inline void follow_turned_patches(const Sign_patches& patches, const Flip_units&
   }
 }
 
+/// The patches of fewer than `least` points (`size[p]` for patch `p`) that
+/// the `signs` join, each
+/// set a list of patches: joined by at least `least_link_weight` of the
+/// weight of the `edges` between them that the signs keep (each at least
+/// `least_joining_weight`), and more than twice the weight of those they
+/// break. Unlike the pieces of one face (`joins_one_face()`), at whatever
+/// angle: a bore a few neighborhoods across has the normals of a few
+/// facets, each a few small patches.
+inline std::vector<std::vector<std::uint32_t> >
+small_patch_sets(const Sign_patches& patches, const std::vector<std::size_t>& size, std::size_t least,
+                 const std::vector<Signed_edge>& edges, const std::vector<int>& signs)
+{
+  struct Kept
+  {
+    double kept = 0, broken = 0;
+  };
+  std::map<std::pair<std::uint32_t, std::uint32_t>, Kept> links;
+  for(const Signed_edge& e : edges)
+  {
+    const std::uint32_t a = patches.patch[e.a], b = patches.patch[e.b];
+    if(a == b || size[a] >= least || size[b] >= least)
+      continue;
+    Kept& link = links[{ (std::min)(a, b), (std::max)(a, b) }];
+    const double kept = e.weight * signs[e.a] * signs[e.b];
+    if(kept >= least_joining_weight)
+      link.kept += kept;
+    else if(kept < 0)
+      link.broken -= kept;
+  }
+  std::vector<std::pair<std::uint32_t, std::uint32_t> > joined;
+  for(const auto& pair : links)
+    if(pair.second.kept >= least_link_weight && pair.second.kept > 2 * pair.second.broken)
+      joined.push_back(pair.first);
+  return joined_sets(patches.count, joined);
+}
+
+/// Up to `per_unit` points of each of the `units` (`unit_of_point`, `units`
+/// for a point of none), evenly spread over its points in their order:
+/// where the winding number's medial queries are sought.
+inline std::vector<std::uint32_t> medial_seeds(const std::vector<std::uint32_t>& unit_of_point, std::size_t units)
+{
+  const std::size_t per_unit = 48;
+  std::vector<std::vector<std::uint32_t> > members(units);
+  for(std::size_t v = 0; v < unit_of_point.size(); ++v)
+    if(unit_of_point[v] < units)
+      members[unit_of_point[v]].push_back(std::uint32_t(v));
+  std::vector<std::uint32_t> seeds;
+  for(const std::vector<std::uint32_t>& m : members)
+  {
+    const std::size_t count = (std::min)(per_unit, m.size());
+    for(std::size_t t = 0; t < count; ++t)
+      seeds.push_back(m[t * m.size() / count]);
+  }
+  return seeds;
+}
+
 /// The signs `signs` of the unit `normals` at `points` (each standing for
 /// `areas[v]` of the surface), checked as a whole: the cloud falls into
 /// patches that the signs orient as one (`sign_patches()`), of which the
-/// largest are turned over where the winding number of the whole cloud,
-/// away from the surface, says so (`units_to_turn()`), and the two sides of
+/// largest, and the largest sets of smaller ones that the signs join
+/// (`small_patch_sets()`), are turned over where the winding number of the
+/// whole cloud, away from the surface and in the narrow spaces the surface
+/// bounds, says so (`units_to_turn()`), and the two sides of
 /// a thin wall together where it says so between them (`turn_thin_walls()`);
 /// then each smaller patch next to a turned one follows the sum of the
 /// `edges` that join it to the rest, as the agglomeration would have joined
@@ -531,7 +655,11 @@ std::vector<int> global_signs(const std::vector<Eigen::Vector3d>& points, const 
   const std::size_t least_points = (std::max<std::size_t>)(50, points.size() / 1000), most_units = 128;
   const std::size_t size = points.size();
   const Sign_patches patches = sign_patches(points, edges, normals, signs);
-  const Flip_units units = flip_units(patches, least_points, most_units);
+  std::vector<std::size_t> patch_size(patches.count, 0);
+  for(std::uint32_t p : patches.patch)
+    ++patch_size[p];
+  const Flip_units units = flip_units(patches, patch_size, small_patch_sets(patches, patch_size, least_points, edges, signs),
+                                      least_points, most_units);
   const std::size_t unit_count = units.patches.size();
   if(unit_count == 0)
     return signs;
@@ -542,7 +670,8 @@ std::vector<int> global_signs(const std::vector<Eigen::Vector3d>& points, const 
     oriented[v] = double(signs[v]) * normals[v];
     unit_of_point[v] = units.unit[patches.patch[v]];
   }
-  Patch_winding_numbers field(points, oriented, areas, unit_of_point, unit_count, ConcurrencyTag());
+  Patch_winding_numbers field(points, oriented, areas, unit_of_point, unit_count, ConcurrencyTag(),
+                              medial_seeds(unit_of_point, unit_count));
   if(field.size() == 0)
     return signs;
   // The edges between units (or from a unit to a point of none) across a
@@ -557,8 +686,8 @@ std::vector<int> global_signs(const std::vector<Eigen::Vector3d>& points, const 
       unit_edges.push_back({ (std::min)(a, b), (std::max)(a, b), e.weight * signs[e.a] * signs[e.b] });
   }
   const auto links = unit_links(unit_count, unit_of_point, points, normals, edges, signs);
-  std::vector<char> turned =
-    units_to_turn<ConcurrencyTag>(field, unit_count, unit_moves(unit_count, links), unit_edges);
+  const std::vector<std::vector<std::uint32_t> > moves = unit_moves(unit_count, links);
+  std::vector<char> turned = units_to_turn<ConcurrencyTag>(field, unit_count, moves, unit_edges);
   const auto pairs = two_sided_pairs(links);
   const auto chords = wall_chords<ConcurrencyTag>(field, pairs, unit_of_point, points, normals, edges);
   turn_thin_walls<ConcurrencyTag>(field, pairs, chords, points, oriented, unit_of_point, turned);
@@ -566,7 +695,8 @@ std::vector<int> global_signs(const std::vector<Eigen::Vector3d>& points, const 
     return signs;
   std::vector<char> patch_turned(patches.count, 0);
   for(std::size_t u = 0; u < unit_count; ++u)
-    patch_turned[units.patches[u]] = turned[u];
+    for(std::uint32_t p : units.patches[u])
+      patch_turned[p] = turned[u];
   for(std::size_t v = 0; v < size; ++v)
     if(patch_turned[patches.patch[v]])
       signs[v] = -signs[v];

@@ -32,21 +32,25 @@ struct Sign_patches
 /// Normals within 20 degrees of each other's line are on one face.
 constexpr double cos_one_face = 0.9396926207859084;
 
+/// An edge that joins two patches weighs at least this share of the most a
+/// pair weighs: the less supported of two normals on the narrow rim of a
+/// plate weighs less.
+constexpr double least_joining_weight = 0.25;
+
 /// Whether the edge `e` between `points` joins two points of one face, sure
 /// of it, oriented alike by `signs`: their unit `normals` within 20 degrees
 /// of each other's line, the chord between them within 15 degrees of both
 /// tangent planes (the two sides of a wall thinner than a few neighbor
 /// spacings, which the edge's weight may take for one face, lie along the
 /// normals), an edge weight that says they agree as they are (not the two
-/// sides of a thin part, nor the reflection across a sharp edge), at least a
-/// quarter of the most a pair weighs (the less supported of two normals on
-/// the narrow rim of a plate weighs less), and signs that keep it.
+/// sides of a thin part, nor the reflection across a sharp edge), at least
+/// `least_joining_weight`, and signs that keep it.
 inline bool joins_one_face(const Signed_edge& e, const std::vector<Eigen::Vector3d>& points,
                            const std::vector<Eigen::Vector3d>& normals, const std::vector<int>& signs)
 {
-  const double least_weight = 0.25, sin_chord = 0.25;
+  const double sin_chord = 0.25;
   const double c = normals[e.a].dot(normals[e.b]);
-  if(!(std::abs(c) > cos_one_face && e.weight * c > 0 && std::abs(e.weight) >= least_weight &&
+  if(!(std::abs(c) > cos_one_face && e.weight * c > 0 && std::abs(e.weight) >= least_joining_weight &&
        e.weight * signs[e.a] * signs[e.b] > 0))
     return false;
   const Eigen::Vector3d chord = points[e.b] - points[e.a];
