@@ -459,6 +459,62 @@ TEST_CASE("Global signs: the two sides of a thin wall or of a narrow gap turned 
   CHECK(nearly_none(blocks, wrong_in_blocks));
 }
 
+TEST_CASE("Thin walls: two units or one unit holding both sides turned where enough sure chords say so", "[orientation]")
+{
+  // The -y wall of a hollow box, 0.06 thick, both sides turned into it: its
+  // outer side (face 2) and its cavity side (face 8) are two units, or one
+  // unit that holds both. Each chord's share of the rest, between the
+  // sides, is 0 (sure: inside a thin part, so the normals should point away
+  // from each other) or 1/2 (unsure: both sides of the wall in the points'
+  // neighborhoods).
+  const Oriented box = oriented(hollow_box(0.06, 12000, 8));
+  const std::vector<int> signs = turned_where(box, { 2, 8 }, [](const Eigen::Vector3d&) { return true; });
+  std::vector<Eigen::Vector3d> normals(signs.size());
+  std::vector<std::uint32_t> outer, cavity;
+  for(std::uint32_t v = 0; v < signs.size(); ++v)
+  {
+    normals[v] = double(signs[v]) * box.normals[v];
+    if(box.surface.face[v] == 2 || box.surface.face[v] == 8)
+      (box.surface.face[v] == 2 ? outer : cavity).push_back(v);
+  }
+  REQUIRE(outer.size() >= 64);
+  REQUIRE(cavity.size() >= 64);
+  auto turned_with = [&](std::size_t sure, bool one_unit) {
+    const std::uint32_t units = one_unit ? 1 : 2;
+    std::vector<std::uint32_t> unit(signs.size(), units);
+    for(std::uint32_t v : outer)
+      unit[v] = 0;
+    for(std::uint32_t v : cavity)
+      unit[v] = one_unit ? 0 : 1;
+    const auto pairs = internal::two_sided_pairs(
+      internal::unit_links(units, unit, box.surface.points, box.normals, box.edges, signs));
+    const std::pair<std::uint32_t, std::uint32_t> pair(0, units - 1);
+    CHECK(pairs == std::vector<std::pair<std::uint32_t, std::uint32_t> >{ pair });
+    internal::Patch_winding_numbers field(box.surface.points, normals, box.surface.areas, unit, units,
+                                          CGAL::Sequential_tag());
+    std::vector<internal::Wall_chord> chords;
+    for(std::size_t c = 0; c < 64; ++c)
+    {
+      std::vector<double> shares(units + 1, 0.);
+      shares[units] = c < sure ? 0. : 0.5;
+      chords.push_back({ outer[c], cavity[c], 1., shares });
+    }
+    std::vector<char> turned(units, 0);
+    internal::turn_thin_walls<CGAL::Sequential_tag>(field, { pair }, { chords }, box.surface.points, normals, unit,
+                                                    turned);
+    return turned;
+  };
+  for(bool one_unit : { false, true })
+  {
+    INFO((one_unit ? "one unit" : "two units"));
+    const std::vector<char> turned(one_unit ? 1 : 2, 1), kept(one_unit ? 1 : 2, 0);
+    // Sure chords, all against, over half of all: the sides turn back.
+    CHECK(turned_with(40, one_unit) == turned);
+    // A few sure chords are not enough.
+    CHECK(turned_with(10, one_unit) == kept);
+  }
+}
+
 TEST_CASE("Global signs: the same for any number of threads", "[orientation]")
 {
   const Oriented pipe = oriented(tube(8000, 7));

@@ -280,7 +280,10 @@ std::vector<char> units_to_turn(Patch_winding_numbers& field, std::size_t units,
 /// How the units (`unit_of_point`, `units` for a point of none) are
 /// joined: for each pair of units, the weight of the edges between them
 /// that join one face (`joins_one_face()`), and of those that say they are
-/// the two sides of a thin part or of a narrow gap (`joins_two_sides()`).
+/// the two sides of a thin part or of a narrow gap (`joins_two_sides()`);
+/// and, for a unit with itself, of the edges within it that say so: a patch
+/// never holds both sides, but a set of small patches that the signs join
+/// can (both sides of a thin wall near a corner, turned together).
 struct Unit_link
 {
   double one_face = 0, two_sides = 0;
@@ -298,9 +301,15 @@ unit_links(std::size_t units, const std::vector<std::uint32_t>& unit_of_point,
   for(const Signed_edge& e : edges)
   {
     const std::uint32_t a = unit_of_point[e.a], b = unit_of_point[e.b];
-    if(a == b || a >= units || b >= units)
+    if(a >= units || b >= units)
       continue;
     Unit_link& link = links[{ (std::min)(a, b), (std::max)(a, b) }];
+    if(a == b)
+    {
+      if(joins_two_sides(e, normals))
+        link.two_sides += std::abs(e.weight);
+      continue;
+    }
     if(joins_one_face(e, points, normals, signs))
       link.one_face += std::abs(e.weight);
     else if(joins_two_sides(e, normals))
@@ -358,7 +367,8 @@ unit_moves(std::size_t units, const std::map<std::pair<std::uint32_t, std::uint3
 
 /// The pairs of units that are the two sides of a thin part or of a narrow
 /// gap: joined (`unit_links()`) by at least `least_link_weight` of edges
-/// that say so, and more than twice what joins them as one face.
+/// that say so, and more than twice what joins them as one face; a unit
+/// paired with itself holds both sides.
 inline std::vector<std::pair<std::uint32_t, std::uint32_t> >
 two_sided_pairs(const std::map<std::pair<std::uint32_t, std::uint32_t>, Unit_link>& links)
 {
@@ -381,9 +391,10 @@ struct Wall_chord
 };
 
 /// The chords of each pair of units of `pairs`: up to `most` of the `edges`
-/// between them that say they are the two sides of a thin part
-/// (`joins_two_sides()`), evenly spread over those in their order, with the
-/// winding number's shares at their middles.
+/// between them (within the unit, for a unit paired with itself) that say
+/// they are the two sides of a thin part (`joins_two_sides()`), evenly
+/// spread over those in their order, with the winding number's shares at
+/// their middles.
 template <typename ConcurrencyTag>
 std::vector<std::vector<Wall_chord> >
 wall_chords(const Patch_winding_numbers& field, const std::vector<std::pair<std::uint32_t, std::uint32_t> >& pairs,
@@ -399,7 +410,7 @@ wall_chords(const Patch_winding_numbers& field, const std::vector<std::pair<std:
   {
     const std::uint32_t a = unit_of_point[e.a], b = unit_of_point[e.b];
     const auto found = number.find({ (std::min)(a, b), (std::max)(a, b) });
-    if(a != b && found != number.end() && joins_two_sides(e, normals))
+    if(found != number.end() && joins_two_sides(e, normals))
       all[found->second].push_back({ e.a, e.b, std::abs(e.weight), std::vector<double>() });
   }
   std::vector<std::size_t> numbers(pairs.size());
@@ -458,7 +469,8 @@ void turn_thin_walls(Patch_winding_numbers& field, const std::vector<std::pair<s
   std::vector<std::size_t> numbers(pairs.size());
   std::iota(numbers.begin(), numbers.end(), std::size_t(0));
   CGAL::for_each<ConcurrencyTag>(numbers, [&](std::size_t p) {
-    members[p] = { pairs[p].first, pairs[p].second };
+    members[p] = pairs[p].first == pairs[p].second ? std::vector<std::uint32_t>{ pairs[p].first }
+                                                   : std::vector<std::uint32_t>{ pairs[p].first, pairs[p].second };
     moved[p] = sums.moved(members[p]);
     return true;
   });
