@@ -341,13 +341,13 @@ TEST_CASE("Patch winding numbers: in a bore narrower than the grid's clearance, 
   const internal::Patch_winding_numbers field(pipe.points, pipe.normals, pipe.areas, group, 4, CGAL::Sequential_tag(),
                                               seeds);
   const std::size_t grid = field.grid_size();
-  REQUIRE(field.medial_touches().size() >= 20);
+  REQUIRE(field.medial_touched().size() >= 20);
   for(std::size_t q = grid; q < field.size(); ++q)
   {
     const Eigen::Vector3d& p = field.queries()[q];
-    const auto& touch = field.medial_touches()[q - grid];
+    const std::uint32_t touched = field.medial_touched()[q - grid];
     INFO("medial query at " << p.transpose());
-    CHECK(pipe.face[touch.touched] == 1);
+    CHECK(pipe.face[touched] == 1);
     CHECK(Eigen::Vector2d(p.x(), p.y()).norm() < 0.03);
     double total = 0;
     for(std::size_t g = 0; g <= 4; ++g)
@@ -361,7 +361,8 @@ TEST_CASE("Patch winding numbers: in a bore narrower than the grid's clearance, 
   }
 }
 
-TEST_CASE("Winding sums: a unit the grid sees judged at the grid's queries alone, a narrow bore at all", "[orientation]")
+TEST_CASE("Winding sums: a unit the grid sees judged at the grid's queries alone, a narrow bore at all",
+          "[orientation]")
 {
   const Surface pipe = tube(20000, 11, 0.08);
   std::vector<std::uint32_t> seeds;
@@ -386,8 +387,10 @@ TEST_CASE("Winding sums: a unit the grid sees judged at the grid's queries alone
   REQUIRE(bore_on_grid < internal::least_moved);
   REQUIRE(bore_on_all >= internal::least_moved);
   const internal::Winding_sums sums(field, 4);
-  CHECK(sums.moved({ 0 }) == Approx(outer_on_grid).epsilon(1e-12));
-  CHECK(sums.moved({ 1 }) == Approx(bore_on_all).epsilon(1e-12));
+  CHECK(sums.judging({ 0 }) == field.grid_size());
+  CHECK(sums.judging({ 1 }) == field.size());
+  CHECK(sums.moved({ 0 }, sums.judging({ 0 })) == Approx(outer_on_grid).epsilon(1e-12));
+  CHECK(sums.moved({ 1 }, sums.judging({ 1 })) == Approx(bore_on_all).epsilon(1e-12));
 }
 
 TEST_CASE("Global signs: a face turned inward turns back, right signs and an open surface stay", "[orientation]")
@@ -459,7 +462,8 @@ TEST_CASE("Global signs: the two sides of a thin wall or of a narrow gap turned 
   CHECK(nearly_none(blocks, wrong_in_blocks));
 }
 
-TEST_CASE("Thin walls: two units or one unit holding both sides turned where enough sure chords say so", "[orientation]")
+TEST_CASE("Thin walls: two units or one unit holding both sides turned where enough sure chords say so",
+          "[orientation]")
 {
   // The -y wall of a hollow box, 0.06 thick, both sides turned into it: its
   // outer side (face 2) and its cavity side (face 8) are two units, or one

@@ -79,18 +79,11 @@ public:
   /// The number of query points: the grid's (`grid_size()`), then the
   /// medial ones.
   std::size_t size() const { return m_queries.size(); }
-  std::size_t grid_size() const { return m_queries.size() - m_medial_touches.size(); }
+  std::size_t grid_size() const { return m_queries.size() - m_medial_touched.size(); }
 
-  /// A medial query: the center of an empty ball, the seed it touches and
-  /// the point across the space from the seed that the ball touches too.
-  struct Medial_touch
-  {
-    std::uint32_t seed, touched;
-    Eigen::Vector3d center;
-  };
-
-  /// The medial queries, in their order, after the grid's.
-  const std::vector<Medial_touch>& medial_touches() const { return m_medial_touches; }
+  /// For each medial query, in their order after the grid's, the point
+  /// across the space from its seed that its empty ball touches too.
+  const std::vector<std::uint32_t>& medial_touched() const { return m_medial_touched; }
 
   /// The query points.
   const std::vector<Eigen::Vector3d>& queries() const { return m_queries; }
@@ -344,7 +337,7 @@ private:
       if(found[i])
       {
         m_queries.push_back(centers[i]);
-        m_medial_touches.push_back({ seeds[i / 2], touched[i], centers[i] });
+        m_medial_touched.push_back(touched[i]);
       }
   }
 
@@ -394,7 +387,7 @@ private:
   Eigen::Vector3d m_corner = Eigen::Vector3d::Zero();
   std::vector<std::vector<Cell_group> > m_levels; // by level, each sorted by code then group
   std::vector<Eigen::Vector3d> m_queries;
-  std::vector<Medial_touch> m_medial_touches;
+  std::vector<std::uint32_t> m_medial_touched;
   const std::vector<Eigen::Vector3d>* m_points = nullptr; // the arrays given, for the point-by-point sums
   const std::vector<Eigen::Vector3d>* m_normals = nullptr;
   const std::vector<double>* m_areas = nullptr;

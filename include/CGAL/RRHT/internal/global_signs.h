@@ -43,9 +43,9 @@ inline double off_solid(double w)
 /// the patches of at least `least` points (`size[p]` for patch `p`), and
 /// the sets of smaller patches that the signs join (`small_sets`, lists of
 /// patches: a small bore, cut into pieces of a few points each) where they
-/// hold at least `least` points together; the `most` largest (largest first, then in that
-/// order), each numbered from 0 in `unit`, the other patches getting
-/// `units.size()`.
+/// hold at least `least` points together; the `most` largest (largest
+/// first, then in that order), each numbered from 0 in `unit`, the other
+/// patches getting `units.size()`.
 struct Flip_units
 {
   std::vector<std::vector<std::uint32_t> > patches; // the patches of each unit
@@ -108,9 +108,9 @@ constexpr double least_moved = 4 * 2.;
 
 /// The winding number of `field` at its queries, summed over its groups, as
 /// units (groups) are turned over; what turning some of them would gain,
-/// and what it would move, at the queries that judge them: the grid's,
-/// where the turn moves enough there (`least_moved`), and all of them,
-/// medial ones too, only where it does not. A face that the grid sees is
+/// and what it would move, at the queries that judge them (`judging()`):
+/// the grid's, where the turn moves enough there (`least_moved`), and all
+/// of them, medial ones too, only where it does not. A face that the grid sees is
 /// judged on a field that is only what the grid tells, and the medial
 /// queries, inside a part thinner than the grid's clearance as well as in a
 /// narrow space, judge only what the grid cannot see: a small bore.
@@ -125,16 +125,24 @@ public:
         m_total[q] += field.shares(g)[q];
   }
 
-  /// How much nearer those of a solid (`off_solid()`, summed over the
-  /// queries that judge them) turning the units `members` over would bring
-  /// the winding number: credited only where it moves it by more than the
+  /// The number of queries, from the first, that judge a turn of the units
+  /// `members`: the grid's where it moves enough there, else all. It does
+  /// not change as units are turned.
+  std::size_t judging(const std::vector<std::uint32_t>& members) const
+  {
+    return moved(members, m_grid) >= least_moved ? m_grid : m_total.size();
+  }
+
+  /// How much nearer those of a solid (`off_solid()`, summed over the first
+  /// `judged` queries) turning the units `members` over would bring the
+  /// winding number: credited only where it moves it by more than the
   /// tolerance (elsewhere, a turn would only make up for the errors of the
   /// sum, the points' areas being estimates, by a little at many queries),
   /// debited wherever it moves it away.
-  double gain(const std::vector<std::uint32_t>& members) const
+  double gain(const std::vector<std::uint32_t>& members, std::size_t judged) const
   {
     double g = 0;
-    for(std::size_t q = 0, end = judging(members); q < end; ++q)
+    for(std::size_t q = 0; q < judged; ++q)
     {
       const double s = share(members, q);
       const double change = off_solid(m_total[q]) - off_solid(m_total[q] - 2 * s);
@@ -144,10 +152,13 @@ public:
   }
 
   /// What turning the units `members` over moves: twice their share beyond
-  /// the tolerance, summed over the queries that judge them.
-  double moved(const std::vector<std::uint32_t>& members) const
+  /// the tolerance, summed over the first `judged` queries.
+  double moved(const std::vector<std::uint32_t>& members, std::size_t judged) const
   {
-    return moved(members, judging(members));
+    double m = 0;
+    for(std::size_t q = 0; q < judged; ++q)
+      m += (std::max)(0., 2 * std::abs(share(members, q)) - winding_tolerance);
+    return m;
   }
 
   /// Turns the unit `u` over.
@@ -170,20 +181,6 @@ private:
     return sum;
   }
 
-  double moved(const std::vector<std::uint32_t>& members, std::size_t end) const
-  {
-    double m = 0;
-    for(std::size_t q = 0; q < end; ++q)
-      m += (std::max)(0., 2 * std::abs(share(members, q)) - winding_tolerance);
-    return m;
-  }
-
-  // The end of the queries that judge a turn of `members`.
-  std::size_t judging(const std::vector<std::uint32_t>& members) const
-  {
-    return moved(members, m_grid) >= least_moved ? m_grid : m_total.size();
-  }
-
   Patch_winding_numbers& m_field;
   std::vector<double> m_total;
   std::size_t m_grid;
@@ -191,12 +188,11 @@ private:
 
 /// The units of `field` (its groups) to turn over, greedily, each move
 /// one of `moves` (a list of units turned together: each unit alone, the
-/// pieces of one smooth face), while a move
-/// gains at least `least_winding_gain` of what it moves, and moves at least
-/// as much as a whole share at four queries: the gain is how much nearer
-/// those of a solid the move brings the winding number (`off_solid()`,
-/// summed over the queries), and what it moves, twice the move's share
-/// beyond the tolerance, summed. A
+/// pieces of one smooth face), while a move gains at least
+/// `least_winding_gain` of what it moves, and moves at least `least_moved`:
+/// the gain is how much nearer those of a solid the move brings the
+/// winding number (`off_solid()`, summed over the queries that judge it),
+/// and what it moves, twice the move's share beyond the tolerance, summed. A
 /// face turned inward leaves the winding number off those of a solid over
 /// the region it sees, and turning it back makes it whole; turning over a
 /// patch of an open surface, whose winding number is fractional anyway,
@@ -224,6 +220,7 @@ std::vector<char> units_to_turn(Patch_winding_numbers& field, std::size_t units,
     for(std::uint32_t u : moves[m])
       member[m][u] = 1;
   std::vector<double> moved(moves.size(), 0.), gain(moves.size(), 0.), agreement(moves.size(), 0.);
+  std::vector<std::size_t> judged(moves.size(), 0);
   std::vector<std::size_t> numbers(moves.size());
   std::iota(numbers.begin(), numbers.end(), std::size_t(0));
   // How far the edges of each move agree with the signs as they are, from
@@ -242,14 +239,15 @@ std::vector<char> units_to_turn(Patch_winding_numbers& field, std::size_t units,
     });
   };
   CGAL::for_each<ConcurrencyTag>(numbers, [&](std::size_t m) {
-    moved[m] = sums.moved(moves[m]);
+    judged[m] = sums.judging(moves[m]);
+    moved[m] = sums.moved(moves[m], judged[m]);
     return true;
   });
   find_agreements();
   for(std::size_t turns = 0; turns < 2 * moves.size(); ++turns)
   {
     CGAL::for_each<ConcurrencyTag>(numbers, [&](std::size_t m) {
-      gain[m] = sums.gain(moves[m]);
+      gain[m] = sums.gain(moves[m], judged[m]);
       return true;
     });
     std::size_t best = moves.size();
@@ -465,13 +463,15 @@ void turn_thin_walls(Patch_winding_numbers& field, const std::vector<std::pair<s
   auto sign = [&](std::uint32_t u) { return u < units && turned[u] ? -1. : 1.; };
   std::vector<std::vector<std::uint32_t> > members(pairs.size());
   std::vector<double> agreement(pairs.size(), 0.), moved(pairs.size(), 0.);
+  std::vector<std::size_t> judged(pairs.size(), 0);
   std::vector<char> allowed(pairs.size(), 0);
   std::vector<std::size_t> numbers(pairs.size());
   std::iota(numbers.begin(), numbers.end(), std::size_t(0));
   CGAL::for_each<ConcurrencyTag>(numbers, [&](std::size_t p) {
     members[p] = pairs[p].first == pairs[p].second ? std::vector<std::uint32_t>{ pairs[p].first }
                                                    : std::vector<std::uint32_t>{ pairs[p].first, pairs[p].second };
-    moved[p] = sums.moved(members[p]);
+    judged[p] = sums.judging(members[p]);
+    moved[p] = sums.moved(members[p], judged[p]);
     return true;
   });
   for(std::size_t turns = 0; turns < pairs.size(); ++turns)
@@ -497,7 +497,8 @@ void turn_thin_walls(Patch_winding_numbers& field, const std::vector<std::pair<s
         vote += (away == (rest < 0.5) ? 1 : -1) * c.weight * sureness;
       }
       agreement[p] = evidence > 0 && evidence >= least_sure * weight ? vote / evidence : 0.;
-      allowed[p] = agreement[p] <= -least_disagreement && sums.gain(members[p]) >= -least_winding_gain * moved[p];
+      allowed[p] = agreement[p] <= -least_disagreement &&
+                   sums.gain(members[p], judged[p]) >= -least_winding_gain * moved[p];
       return true;
     });
     std::size_t best = pairs.size();
@@ -591,8 +592,7 @@ inline void follow_turned_patches(const Sign_patches& patches, const Flip_units&
 }
 
 /// The patches of fewer than `least` points (`size[p]` for patch `p`) that
-/// the `signs` join, each
-/// set a list of patches: joined by at least `least_link_weight` of the
+/// the `signs` join, each set a list of patches: joined by at least `least_link_weight` of the
 /// weight of the `edges` between them that the signs keep (each at least
 /// `least_joining_weight`), and more than twice the weight of those they
 /// break. Unlike the pieces of one face (`joins_one_face()`), at whatever
@@ -670,8 +670,9 @@ std::vector<int> global_signs(const std::vector<Eigen::Vector3d>& points, const 
   std::vector<std::size_t> patch_size(patches.count, 0);
   for(std::uint32_t p : patches.patch)
     ++patch_size[p];
-  const Flip_units units = flip_units(patches, patch_size, small_patch_sets(patches, patch_size, least_points, edges, signs),
-                                      least_points, most_units);
+  const Flip_units units =
+    flip_units(patches, patch_size, small_patch_sets(patches, patch_size, least_points, edges, signs), least_points,
+               most_units);
   const std::size_t unit_count = units.patches.size();
   if(unit_count == 0)
     return signs;
