@@ -468,9 +468,9 @@ TEST_CASE("Thin walls: two units or one unit holding both sides turned where eno
   // The -y wall of a hollow box, 0.06 thick, both sides turned into it: its
   // outer side (face 2) and its cavity side (face 8) are two units, or one
   // unit that holds both. Each chord's share of the rest, between the
-  // sides, is 0 (sure: inside a thin part, so the normals should point away
-  // from each other) or 1/2 (unsure: both sides of the wall in the points'
-  // neighborhoods).
+  // sides, is 0 or a little more (sure: inside a thin part, so the normals
+  // should point away from each other) or 1/2 (unsure: both sides of the
+  // wall in the points' neighborhoods).
   const Oriented box = oriented(hollow_box(0.06, 12000, 8));
   const std::vector<int> signs = turned_where(box, { 2, 8 }, [](const Eigen::Vector3d&) { return true; });
   std::vector<Eigen::Vector3d> normals(signs.size());
@@ -483,7 +483,7 @@ TEST_CASE("Thin walls: two units or one unit holding both sides turned where eno
   }
   REQUIRE(outer.size() >= 64);
   REQUIRE(cavity.size() >= 64);
-  auto turned_with = [&](std::size_t sure, bool one_unit) {
+  auto turned_with = [&](std::size_t sure, bool one_unit, double rest = 0.) {
     const std::uint32_t units = one_unit ? 1 : 2;
     std::vector<std::uint32_t> unit(signs.size(), units);
     for(std::uint32_t v : outer)
@@ -500,7 +500,7 @@ TEST_CASE("Thin walls: two units or one unit holding both sides turned where eno
     for(std::size_t c = 0; c < 64; ++c)
     {
       std::vector<double> shares(units + 1, 0.);
-      shares[units] = c < sure ? 0. : 0.5;
+      shares[units] = c < sure ? rest : 0.5;
       chords.push_back({ outer[c], cavity[c], 1., shares });
     }
     std::vector<char> turned(units, 0);
@@ -516,7 +516,50 @@ TEST_CASE("Thin walls: two units or one unit holding both sides turned where eno
     CHECK(turned_with(40, one_unit) == turned);
     // A few sure chords are not enough.
     CHECK(turned_with(10, one_unit) == kept);
+    // Every chord a little sure (1/5 of full), all against: they turn back.
+    CHECK(turned_with(64, one_unit, 0.2) == turned);
+    // Every chord barely sure (1/25 of full): together less than the weight
+    // of edges that makes two units a pair, not enough.
+    CHECK(turned_with(64, one_unit, 0.24) == kept);
   }
+}
+
+TEST_CASE("Thin walls: a wall in several units, turned inward, turns back whole", "[orientation]")
+{
+  // The -y wall of a hollow box, 0.06 thick, both sides turned into it: its
+  // outer side (face 2) in two units, x < 0 and x >= 0, its cavity side
+  // (face 8) one unit, and every chord sure against the signs. Turning one
+  // pair back would leave the other's chords no longer opposite, and its
+  // outer unit inward.
+  const Oriented box = oriented(hollow_box(0.06, 12000, 8));
+  const std::vector<int> signs = turned_where(box, { 2, 8 }, [](const Eigen::Vector3d&) { return true; });
+  const std::uint32_t units = 3;
+  std::vector<Eigen::Vector3d> normals(signs.size());
+  std::vector<std::uint32_t> unit(signs.size(), units);
+  std::vector<std::vector<std::uint32_t> > members(units);
+  for(std::uint32_t v = 0; v < signs.size(); ++v)
+  {
+    normals[v] = double(signs[v]) * box.normals[v];
+    if(box.surface.face[v] == 2 || box.surface.face[v] == 8)
+    {
+      unit[v] = box.surface.face[v] == 8 ? 2 : box.surface.points[v].x() < 0 ? 0 : 1;
+      members[unit[v]].push_back(v);
+    }
+  }
+  for(const std::vector<std::uint32_t>& m : members)
+    REQUIRE(m.size() >= 64);
+  const auto pairs =
+    internal::two_sided_pairs(internal::unit_links(units, unit, box.surface.points, box.normals, box.edges, signs));
+  REQUIRE(pairs == std::vector<std::pair<std::uint32_t, std::uint32_t> >{ { 0, 2 }, { 1, 2 } });
+  internal::Patch_winding_numbers field(box.surface.points, normals, box.surface.areas, unit, units,
+                                        CGAL::Sequential_tag());
+  std::vector<std::vector<internal::Wall_chord> > chords(pairs.size());
+  for(std::size_t p = 0; p < pairs.size(); ++p)
+    for(std::size_t c = 0; c < 64; ++c)
+      chords[p].push_back({ members[pairs[p].first][c], members[2][c], 1., std::vector<double>(units + 1, 0.) });
+  std::vector<char> turned(units, 0);
+  internal::turn_thin_walls<CGAL::Sequential_tag>(field, pairs, chords, box.surface.points, normals, unit, turned);
+  CHECK(turned == std::vector<char>(units, 1));
 }
 
 TEST_CASE("Global signs: the same for any number of threads", "[orientation]")

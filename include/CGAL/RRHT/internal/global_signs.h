@@ -106,6 +106,12 @@ constexpr double least_winding_gain = 0.25;
 /// A turn must move at least as much as a whole share at four queries.
 constexpr double least_moved = 4 * 2.;
 
+/// A thin wall turned over (`turn_thin_walls()`) that moves less than a
+/// whole share at two queries may lose as much as one that moves that much:
+/// so short a wall, at the inner end of a slot, moves the winding number by
+/// no more than the sums' errors.
+constexpr double least_judged_move = 2 * 2.;
+
 /// The winding number of `field` at its queries, summed over its groups, as
 /// units (groups) are turned over; what turning some of them would gain,
 /// and what it would move, at the queries that judge them (`judging()`):
@@ -430,27 +436,109 @@ wall_chords(const Patch_winding_numbers& field, const std::vector<std::pair<std:
 /// quarter of 1/2, in full at 0 or 1 and beyond.
 inline double how_sure(double x) { return (std::min)(1., (std::max)(0., 2 * std::abs(2 * x - 1) - 1)); }
 
-/// Turns over, greedily, the pairs of units of `field` that are the two
-/// sides of a thin part or of a narrow gap (`pairs`), both together, where
-/// the winding number between the two sides says so, updating `turned`.
-/// Turned together, the two sides of a wall swap which way they face, and
-/// the winding number away from the wall barely changes: the normals of
-/// both sides pointing into the wall, or both out of it, look alike from
-/// afar. Between the two sides, the share of the rest of the cloud tells:
-/// near 0, the sides are those of a thin part, whose normals point away
-/// from each other; near 1, those of a gap between two parts, whose normals
-/// point towards each other. The chords of each pair (`wall_chords()`) vote,
+/// The walls that the pairs of units `pairs` make where their chords are
+/// against the signs (`agreement` at most `-least_disagreement`): the units
+/// of such pairs that share a unit, together, each wall in increasing order,
+/// the walls in order. A wall turned inward, in several units, is turned
+/// back whole or not at all: turning back one pair of it leaves the chords
+/// between its units and the rest of the wall no longer opposite, so that
+/// nothing would turn the rest back, and the seam moves the far field.
+inline std::vector<std::vector<std::uint32_t> >
+walls_against(std::size_t units, const std::vector<std::pair<std::uint32_t, std::uint32_t> >& pairs,
+              const std::vector<double>& agreement, double least_disagreement)
+{
+  std::vector<std::pair<std::uint32_t, std::uint32_t> > against;
+  for(std::size_t p = 0; p < pairs.size(); ++p)
+    if(agreement[p] <= -least_disagreement)
+      against.push_back(pairs[p]);
+  std::vector<std::vector<std::uint32_t> > walls = joined_sets(units, against);
+  std::vector<char> in_wall(units, 0);
+  for(const std::vector<std::uint32_t>& wall : walls)
+    for(std::uint32_t u : wall)
+      in_wall[u] = 1;
+  for(const auto& pair : against) // a unit paired with itself alone
+    if(!in_wall[pair.first])
+    {
+      walls.push_back({ pair.first });
+      in_wall[pair.first] = 1;
+    }
+  std::sort(walls.begin(), walls.end());
+  return walls;
+}
+
+/// What the chords of one pair of units say (`turn_thin_walls()`): the
+/// vote, from `-evidence` (all against the signs) to `evidence`, and the
+/// evidence, their weights times how sure each is; both 0 where the chords
+/// whose share tells anything weigh less than `least_sure` of all, or the
+/// evidence less than `least_link_weight`, what makes two units a pair.
+struct Pair_vote
+{
+  double vote = 0, evidence = 0;
+};
+
+/// The vote of the `chords` of the pair of units `a` and `b` under the
+/// signs `oriented` and the units turned so far (`turned`).
+inline Pair_vote pair_vote(const std::vector<Wall_chord>& chords, std::uint32_t a, std::uint32_t b,
+                           const std::vector<Eigen::Vector3d>& points, const std::vector<Eigen::Vector3d>& oriented,
+                           const std::vector<std::uint32_t>& unit_of_point, const std::vector<char>& turned,
+                           double least_sure)
+{
+  const std::size_t units = turned.size();
+  auto sign = [&](std::uint32_t u) { return u < units && turned[u] ? -1. : 1.; };
+  double sure = 0, votes = 0, weight = 0, telling = 0;
+  for(const Wall_chord& c : chords)
+  {
+    weight += c.weight;
+    const Eigen::Vector3d d = points[c.j] - points[c.i];
+    const double oi = sign(unit_of_point[c.i]) * oriented[c.i].dot(d),
+                 oj = sign(unit_of_point[c.j]) * oriented[c.j].dot(d);
+    if(!(oi * oj < 0)) // the two normals not opposite along the chord
+      continue;
+    double rest = 0;
+    for(std::uint32_t g = 0; g <= units; ++g)
+      if(g != a && g != b)
+        rest += sign(g) * c.shares[g];
+    const double sureness = how_sure(rest);
+    const bool away = oi < 0;
+    sure += c.weight * sureness;
+    telling += sureness > 0 ? c.weight : 0.;
+    votes += (away == (rest < 0.5) ? 1 : -1) * c.weight * sureness;
+  }
+  Pair_vote v;
+  if(sure >= least_link_weight && telling >= least_sure * weight)
+  {
+    v.vote = votes;
+    v.evidence = sure;
+  }
+  return v;
+}
+
+/// Turns over, greedily, the walls of units of `field` that are the two
+/// sides of a thin part or of a narrow gap (`pairs`), where the winding
+/// number between the two sides says so, updating `turned`. Turned
+/// together, the two sides of a wall swap which way they face, and the
+/// winding number away from the wall barely changes: the normals of both
+/// sides pointing into the wall, or both out of it, look alike from afar.
+/// Between the two sides, the share of the rest of the cloud tells: near 0,
+/// the sides are those of a thin part, whose normals point away from each
+/// other; near 1, those of a gap between two parts, whose normals point
+/// towards each other. The chords of each pair (`wall_chords()`) vote,
 /// weighed by their edges and by how sure that share is (`how_sure()`). The
 /// points' areas, taken from their nearest neighbors, shrink wherever the
 /// neighbors hold both sides, and the shares with them: between the fins of
 /// a finned part, the rest's share falls near 1/2, and only a few chords
-/// near the gap's mouth seem sure. So a pair is turned only where the votes
-/// weigh at least `least_sure` of its chords' weight, at least
-/// `least_disagreement` of the vote (from -1 to 1) is against the signs as
-/// they are, most against first, and the winding number away from the
-/// surface loses at most `least_winding_gain` of what the pair moves
-/// (`units_to_turn()`): a pair that is no thin wall moves it. `oriented` are
-/// the normals under the signs the units were made from.
+/// near the gap's mouth seem sure. So a pair's vote counts only where the
+/// chords whose share tells anything (`how_sure()` above 0) weigh at least
+/// `least_sure` of its chords' weight (`pair_vote()`); across a wall about
+/// a point spacing thick, the shrunken areas leave the share of every chord
+/// well above 0, each chord a little sure. The pairs at least
+/// `least_disagreement` against the signs (from -1 to 1) make walls
+/// (`walls_against()`), each turned whole, most against first (the votes of
+/// all the pairs within it), while the winding number away from the
+/// surface loses at most `least_winding_gain` of what the wall moves, or of
+/// `least_judged_move` where it moves less (`units_to_turn()`): a wall that
+/// is none moves it. `oriented` are the normals under the signs the units
+/// were made from.
 template <typename ConcurrencyTag>
 void turn_thin_walls(Patch_winding_numbers& field, const std::vector<std::pair<std::uint32_t, std::uint32_t> >& pairs,
                      const std::vector<std::vector<Wall_chord> >& chords, const std::vector<Eigen::Vector3d>& points,
@@ -460,54 +548,52 @@ void turn_thin_walls(Patch_winding_numbers& field, const std::vector<std::pair<s
   const double least_disagreement = 0.5, least_sure = 0.5;
   const std::size_t units = turned.size();
   Winding_sums sums(field, units);
-  auto sign = [&](std::uint32_t u) { return u < units && turned[u] ? -1. : 1.; };
-  std::vector<std::vector<std::uint32_t> > members(pairs.size());
-  std::vector<double> agreement(pairs.size(), 0.), moved(pairs.size(), 0.);
-  std::vector<std::size_t> judged(pairs.size(), 0);
-  std::vector<char> allowed(pairs.size(), 0);
+  std::vector<Pair_vote> votes(pairs.size());
+  std::vector<double> agreement(pairs.size(), 0.);
   std::vector<std::size_t> numbers(pairs.size());
   std::iota(numbers.begin(), numbers.end(), std::size_t(0));
-  CGAL::for_each<ConcurrencyTag>(numbers, [&](std::size_t p) {
-    members[p] = pairs[p].first == pairs[p].second ? std::vector<std::uint32_t>{ pairs[p].first }
-                                                   : std::vector<std::uint32_t>{ pairs[p].first, pairs[p].second };
-    judged[p] = sums.judging(members[p]);
-    moved[p] = sums.moved(members[p], judged[p]);
-    return true;
-  });
   for(std::size_t turns = 0; turns < pairs.size(); ++turns)
   {
     CGAL::for_each<ConcurrencyTag>(numbers, [&](std::size_t p) {
-      const std::uint32_t a = pairs[p].first, b = pairs[p].second;
-      double evidence = 0, vote = 0, weight = 0;
-      for(const Wall_chord& c : chords[p])
-      {
-        weight += c.weight;
-        const Eigen::Vector3d d = points[c.j] - points[c.i];
-        const double oi = sign(unit_of_point[c.i]) * oriented[c.i].dot(d),
-                     oj = sign(unit_of_point[c.j]) * oriented[c.j].dot(d);
-        if(!(oi * oj < 0)) // the two normals not opposite along the chord
-          continue;
-        double rest = 0;
-        for(std::uint32_t g = 0; g <= units; ++g)
-          if(g != a && g != b)
-            rest += sign(g) * c.shares[g];
-        const double sureness = how_sure(rest);
-        const bool away = oi < 0;
-        evidence += c.weight * sureness;
-        vote += (away == (rest < 0.5) ? 1 : -1) * c.weight * sureness;
-      }
-      agreement[p] = evidence > 0 && evidence >= least_sure * weight ? vote / evidence : 0.;
-      allowed[p] = agreement[p] <= -least_disagreement &&
-                   sums.gain(members[p], judged[p]) >= -least_winding_gain * moved[p];
+      votes[p] = pair_vote(chords[p], pairs[p].first, pairs[p].second, points, oriented, unit_of_point, turned,
+                           least_sure);
+      agreement[p] = votes[p].evidence > 0 ? votes[p].vote / votes[p].evidence : 0.;
       return true;
     });
-    std::size_t best = pairs.size();
+    const std::vector<std::vector<std::uint32_t> > walls =
+      walls_against(units, pairs, agreement, least_disagreement);
+    std::vector<std::uint32_t> wall_of(units, std::uint32_t(walls.size()));
+    for(std::size_t w = 0; w < walls.size(); ++w)
+      for(std::uint32_t u : walls[w])
+        wall_of[u] = std::uint32_t(w);
+    std::vector<double> wall_vote(walls.size(), 0.), wall_evidence(walls.size(), 0.);
     for(std::size_t p = 0; p < pairs.size(); ++p)
-      if(allowed[p] && (best == pairs.size() || agreement[p] < agreement[best]))
-        best = p;
-    if(best == pairs.size())
+    {
+      const std::uint32_t w = wall_of[pairs[p].first];
+      if(w < walls.size() && w == wall_of[pairs[p].second])
+      {
+        wall_vote[w] += votes[p].vote;
+        wall_evidence[w] += votes[p].evidence;
+      }
+    }
+    std::vector<char> allowed(walls.size(), 0);
+    std::vector<std::size_t> wall_numbers(walls.size());
+    std::iota(wall_numbers.begin(), wall_numbers.end(), std::size_t(0));
+    CGAL::for_each<ConcurrencyTag>(wall_numbers, [&](std::size_t w) {
+      const std::size_t judged = sums.judging(walls[w]);
+      allowed[w] = wall_vote[w] <= -least_disagreement * wall_evidence[w] &&
+                   sums.gain(walls[w], judged) >=
+                     -least_winding_gain * (std::max)(sums.moved(walls[w], judged), least_judged_move);
+      return true;
+    });
+    std::size_t best = walls.size();
+    for(std::size_t w = 0; w < walls.size(); ++w)
+      if(allowed[w] && (best == walls.size() ||
+                        wall_vote[w] / wall_evidence[w] < wall_vote[best] / wall_evidence[best]))
+        best = w;
+    if(best == walls.size())
       break;
-    for(std::uint32_t u : members[best])
+    for(std::uint32_t u : walls[best])
     {
       sums.turn(u);
       turned[u] = char(!turned[u]);
