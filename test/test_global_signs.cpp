@@ -18,7 +18,9 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <random>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -391,6 +393,24 @@ TEST_CASE("Winding sums: a unit the grid sees judged at the grid's queries alone
   CHECK(sums.judging({ 1 }) == field.size());
   CHECK(sums.moved({ 0 }, sums.judging({ 0 })) == Approx(outer_on_grid).epsilon(1e-12));
   CHECK(sums.moved({ 1 }, sums.judging({ 1 })) == Approx(bore_on_all).epsilon(1e-12));
+}
+
+TEST_CASE("Unit moves: a unit alone only where no smooth face joins it, the pieces of a face together",
+          "[orientation]")
+{
+  // 0-1-2 one face; 2-3 joined as one face, but as much as half says two
+  // sides; 3-4 joined by too little weight.
+  std::map<std::pair<std::uint32_t, std::uint32_t>, internal::Unit_link> links;
+  links[{ 0, 1 }].one_face = 5;
+  links[{ 1, 2 }].one_face = 5;
+  links[{ 2, 3 }].one_face = 5;
+  links[{ 2, 3 }].two_sides = 2.5;
+  links[{ 3, 4 }].one_face = 0.5 * internal::least_link_weight;
+  const std::vector<std::vector<std::uint32_t> > expected = { { 3 }, { 4 }, { 0, 1, 2 } };
+  CHECK(internal::unit_moves(5, links) == expected);
+  links[{ 2, 3 }].two_sides = 2;
+  const std::vector<std::vector<std::uint32_t> > joined = { { 4 }, { 0, 1, 2, 3 } };
+  CHECK(internal::unit_moves(5, links) == joined);
 }
 
 TEST_CASE("Global signs: a face turned inward turns back, right signs and an open surface stay", "[orientation]")

@@ -329,6 +329,22 @@ TEST_CASE("Consistent orientation of a thin open blade: its two sides point away
   CHECK((std::max)(outward, 1 - outward) >= 0.99);
 }
 
+TEST_CASE("Consistent orientation of an open curved sheet: the whole sheet to one side", "[orientation]")
+{
+  // A quarter of a cylinder, sampled on one side: its winding number is
+  // fractional everywhere, and turning some of its pieces would bring it
+  // nearer 0 or 1 at many queries.
+  for(const double noise : { 0., 0.2 })
+  {
+    Cloud cloud = bent_sheet(30000, 0, 2);
+    add_noise(cloud, noise, 49);
+    const auto end = estimate_and_orient(cloud);
+    const double outward = share_outward(cloud, end);
+    INFO("noise " << noise << "%");
+    CHECK((std::max)(outward, 1 - outward) >= 0.99);
+  }
+}
+
 TEST_CASE("Consistent orientation of separate objects: each outward", "[orientation]")
 {
   Cloud cloud = cube(10000, 5), other = closed_cylinder(10000, 6);

@@ -350,10 +350,24 @@ joined_sets(std::size_t count, const std::vector<std::pair<std::uint32_t, std::u
   return sets;
 }
 
-/// The moves of `units_to_turn()`: each unit alone, then the pieces of each
-/// smooth face together, units joined (`unit_links()`) by more weight of
-/// edges that join one face than twice the weight of those that say they
-/// are the two sides of a thin part, and at least `least_link_weight`.
+/// Whether each of `count` elements is in one of `sets`.
+inline std::vector<char> in_some_set(std::size_t count, const std::vector<std::vector<std::uint32_t> >& sets)
+{
+  std::vector<char> in(count, 0);
+  for(const std::vector<std::uint32_t>& set : sets)
+    for(std::uint32_t e : set)
+      in[e] = 1;
+  return in;
+}
+
+/// The moves of `units_to_turn()`: each unit that no smooth face joins to
+/// another alone, then the pieces of each smooth face together, units joined
+/// (`unit_links()`) by more weight of edges that join one face than twice
+/// the weight of those that say they are the two sides of a thin part, and
+/// at least `least_link_weight`. A piece of a smooth face never turns
+/// alone: the winding number of a curved open sheet is fractional
+/// everywhere, and turning some of its pieces can bring it nearer 0 or 1
+/// while it breaks the face in two.
 inline std::vector<std::vector<std::uint32_t> >
 unit_moves(std::size_t units, const std::map<std::pair<std::uint32_t, std::uint32_t>, Unit_link>& links)
 {
@@ -361,10 +375,12 @@ unit_moves(std::size_t units, const std::map<std::pair<std::uint32_t, std::uint3
   for(const auto& pair : links)
     if(pair.second.one_face >= least_link_weight && pair.second.one_face > 2 * pair.second.two_sides)
       joined.push_back(pair.first);
-  std::vector<std::vector<std::uint32_t> > moves;
+  std::vector<std::vector<std::uint32_t> > faces = joined_sets(units, joined), moves;
+  const std::vector<char> in_face = in_some_set(units, faces);
   for(std::uint32_t u = 0; u < units; ++u)
-    moves.push_back({ u });
-  for(std::vector<std::uint32_t>& face : joined_sets(units, joined))
+    if(!in_face[u])
+      moves.push_back({ u });
+  for(std::vector<std::uint32_t>& face : faces)
     moves.push_back(std::move(face));
   return moves;
 }
@@ -452,10 +468,7 @@ walls_against(std::size_t units, const std::vector<std::pair<std::uint32_t, std:
     if(agreement[p] <= -least_disagreement)
       against.push_back(pairs[p]);
   std::vector<std::vector<std::uint32_t> > walls = joined_sets(units, against);
-  std::vector<char> in_wall(units, 0);
-  for(const std::vector<std::uint32_t>& wall : walls)
-    for(std::uint32_t u : wall)
-      in_wall[u] = 1;
+  std::vector<char> in_wall = in_some_set(units, walls);
   for(const auto& pair : against) // a unit paired with itself alone
     if(!in_wall[pair.first])
     {
