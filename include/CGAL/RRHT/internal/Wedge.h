@@ -71,8 +71,7 @@ public:
     bool settled = false;
     for(int round = 0; round < max_rounds && !settled; ++round)
     {
-      planes[0] = Plane(points, face, 0);
-      planes[1] = Plane(points, face, 1);
+      fit_faces(points, face, planes);
       if(planes[0].size < 3 || planes[1].size < 3)
         return;
       settled = true;
@@ -86,8 +85,7 @@ public:
     // Settled, the planes are already those of the faces.
     if(!settled)
     {
-      planes[0] = Plane(points, face, 0);
-      planes[1] = Plane(points, face, 1);
+      fit_faces(points, face, planes);
     }
     const std::size_t min_face = (std::max)(std::size_t(3), n / 8);
     if(planes[0].size < min_face || planes[1].size < min_face)
@@ -168,6 +166,35 @@ private:
 
     double distance(const Eigen::Vector3d& p) const { return std::abs((p - centroid).dot(normal)); }
   };
+
+  /// The planes of the two faces (`face[t]`, 0 or 1, for each point `t`),
+  /// as `Plane` fits each: two passes over the points for both faces.
+  static void fit_faces(const std::vector<Eigen::Vector3d>& points, const std::vector<int>& face, Plane (&planes)[2])
+  {
+    Eigen::Vector3d centroids[2] = { Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero() };
+    std::size_t counts[2] = { 0, 0 };
+    for(std::size_t t = 0; t < points.size(); ++t)
+      centroids[face[t]] += points[t], ++counts[face[t]];
+    Eigen::Matrix3d covariances[2] = { Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero() };
+    for(int g = 0; g < 2; ++g)
+      centroids[g] /= double(counts[g]);
+    for(std::size_t t = 0; t < points.size(); ++t)
+    {
+      const Eigen::Vector3d q = points[t] - centroids[face[t]];
+      add_outer_product(covariances[face[t]], q, q);
+    }
+    for(int g = 0; g < 2; ++g)
+    {
+      planes[g] = Plane();
+      planes[g].size = counts[g];
+      if(counts[g] == 0)
+        continue;
+      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> axes(covariances[g]);
+      planes[g].centroid = centroids[g];
+      planes[g].normal = axes.eigenvectors().col(0);
+      planes[g].squared_deviation = (std::max)(0., axes.eigenvalues()(0));
+    }
+  }
 
   /// The face (0 or 1) that a point at `d` is twice nearer than the other,
   /// or -1.
