@@ -6,6 +6,7 @@
 
 #include <CGAL/rrht_estimate_normals.h>
 #include <CGAL/rrht_orient_normals.h>
+#include <CGAL/RRHT/internal/Sheets.h>
 #include <CGAL/RRHT/internal/Wedge.h>
 #include <CGAL/RRHT/internal/relaxed_signs.h>
 
@@ -224,6 +225,47 @@ TEST_CASE("Wedge: the two sides of a thin part that meet at a small angle, not p
   CHECK_FALSE(Wedge(sample([t](double x, int) { return -t * std::abs(x); }), axis).found());
   const Wedge flat(sample([](double x, int) { return 1e-3 * x; }), axis);
   CHECK(flat.deviation() < 1e-12);
+}
+
+TEST_CASE("Sheets: stacked sheets told apart by their offsets, one noisy sheet kept whole", "[orientation]")
+{
+  using CGAL::RRHT::internal::Sheets;
+  // 16 offsets spread evenly, of standard deviation `noise`, on each sheet
+  // at `levels`; the point, at 0, on the first.
+  const double noise = 0.01;
+  const auto offsets = [noise](const std::vector<double>& levels) {
+    std::vector<double> o(1, 0.);
+    for(double level : levels)
+      for(int t = 0; t < 16; ++t)
+        o.push_back(level + noise * std::sqrt(3.) * ((t + 0.5) / 8 - 1));
+    return o;
+  };
+  std::vector<double> one = offsets({ 0. });
+  const Sheets::Splits one_splits(one);
+  CHECK(std::is_sorted(one.begin(), one.end()));
+  // The best split into two halves a single sheet: less than its noise.
+  CHECK(one_splits.spread_within_sheets() > 0.4 * noise);
+  CHECK(one_splits.spread_within_sheets() < noise);
+  const Sheets single(one_splits, noise);
+  CHECK_FALSE(single.several());
+  CHECK(single.side(3 * noise) == 1);
+  // Two sheets 6 noise deviations apart: the spread is each one's.
+  std::vector<double> two = offsets({ 0., 6 * noise });
+  const Sheets::Splits two_splits(two);
+  CHECK(two_splits.spread_within_sheets() == Approx(noise).epsilon(0.1));
+  const Sheets pair(two_splits, noise);
+  CHECK(pair.several());
+  CHECK(pair.side(noise) == 1);
+  CHECK(pair.side(6 * noise) == -1);
+  // The same offsets, where the noise over the cloud is as large as the gap:
+  // one sheet.
+  CHECK_FALSE(Sheets(two_splits, 6 * noise).several());
+  // Three sheets, the point's the first: the third is farther than the next.
+  std::vector<double> three = offsets({ 0., 6 * noise, 12 * noise });
+  const Sheets stack(Sheets::Splits(three), noise);
+  CHECK(stack.side(0) == 1);
+  CHECK(stack.side(6 * noise) == -1);
+  CHECK(stack.side(12 * noise) == 0);
 }
 
 TEST_CASE("Relaxed signs: a wrongly joined part of a cluster flips back, clusters apart stay apart", "[orientation]")

@@ -61,12 +61,11 @@ public:
     std::vector<double> offsets(n);
     for(std::size_t t = 0; t < n; ++t)
       offsets[t] = axis.dot(points[t]);
-    std::vector<double> sorted(offsets);
-    std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(n / 2), sorted.end());
-    const double median = sorted[n / 2];
+    std::nth_element(offsets.begin(), offsets.begin() + std::ptrdiff_t(n / 2), offsets.end());
+    const double median = offsets[n / 2];
     std::vector<int> face(n);
     for(std::size_t t = 0; t < n; ++t)
-      face[t] = offsets[t] > median;
+      face[t] = axis.dot(points[t]) > median;
     Plane planes[2];
     bool settled = false;
     for(int round = 0; round < max_rounds && !settled; ++round)
@@ -90,8 +89,7 @@ public:
     const std::size_t min_face = (std::max)(std::size_t(3), n / 8);
     if(planes[0].size < min_face || planes[1].size < min_face)
       return;
-    const std::vector<int> one_face(n, 0);
-    const Plane one(points, one_face, 0);
+    const Plane one(points);
     const double deviation_1 = std::sqrt(one.squared_deviation / double(n)),
                  deviation_2 = std::sqrt((planes[0].squared_deviation + planes[1].squared_deviation) / double(n));
     if(!(deviation_1 > separation * deviation_2))
@@ -110,7 +108,10 @@ public:
       const double mean = axis.dot(planes[g].centroid);
       for(std::size_t t = 0; t < n; ++t)
         if(face[t] == g)
-          spread += (offsets[t] - mean) * (offsets[t] - mean);
+        {
+          const double offset = axis.dot(points[t]);
+          spread += (offset - mean) * (offset - mean);
+        }
     }
     if(std::sqrt(spread / double(n)) < min_tilt * deviation_2)
       return;
@@ -145,7 +146,8 @@ private:
   static constexpr double separation = 3, max_side_by_side = 0.5, min_tilt = 2;
   static constexpr double cos_facing = 0.95; // 18 degrees
 
-  /// The plane of least squared distances to the points of one face.
+  /// The plane of least squared distances to some points: all of them
+  /// (this constructor), or one face's (`fit_faces()`).
   struct Plane
   {
     Eigen::Vector3d centroid = Eigen::Vector3d::Zero(), normal = Eigen::Vector3d::UnitZ();
@@ -153,9 +155,9 @@ private:
     std::size_t size = 0;
 
     Plane() = default;
-    Plane(const std::vector<Eigen::Vector3d>& points, const std::vector<int>& face, int which)
+    explicit Plane(const std::vector<Eigen::Vector3d>& points)
     {
-      const Principal_axes principal = principal_axes(points, [&](std::size_t t) { return face[t] == which; });
+      const Principal_axes principal = principal_axes(points, [](std::size_t) { return true; });
       size = principal.count;
       if(size == 0)
         return;

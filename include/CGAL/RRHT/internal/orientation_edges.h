@@ -157,12 +157,13 @@ std::vector<Signed_edge> orientation_edges(const Neighbor_search& search, const 
     static_cast<unsigned int>((std::min<std::size_t>)((std::max)(k, sheet_neighbors), size - 1));
   // The neighbors of every point, k per point, their offset scales, and the
   // positions of those of its sheet_k nearest whose normals are parallel to
-  // its own (itself included).
+  // its own (itself included), and the splits of their offsets into sheets.
   const std::size_t row = sheet_k + 1;
   std::vector<std::uint32_t> neighbors(size * k), parallel(size * row);
   std::vector<double> scales(size), spreads(size), radii(size);
   std::vector<std::size_t> counts(size);
   std::vector<Eigen::Vector3d> axes(size);
+  std::vector<Sheets::Splits> splits(size);
   areas.assign(size, 0.);
   struct Scratch
   {
@@ -170,13 +171,6 @@ std::vector<Signed_edge> orientation_edges(const Neighbor_search& search, const 
     Neighbor_search::Scratch search;
     std::vector<double> work;
     std::vector<Eigen::Vector3d> displacements;
-  };
-  // The offsets along its axis of the point at position `i`'s parallel
-  // neighbors, in `work`.
-  auto parallel_offsets = [&](std::size_t i, std::vector<double>& work) {
-    work.clear();
-    for(std::size_t t = 0; t < counts[i]; ++t)
-      work.push_back(axes[i].dot(search.point(parallel[i * row + t]) - search.point(i)));
   };
   const std::function<bool(double)> no_callback;
   Progress no_progress(no_callback, size);
@@ -212,8 +206,11 @@ std::vector<Signed_edge> orientation_edges(const Neighbor_search& search, const 
         }
       }
       axes[i] = axis.squaredNorm() > 0 ? axis.normalized() : normals[i];
-      parallel_offsets(i, scratch.work);
-      spreads[i] = Sheets::spread_within_sheets(scratch.work);
+      scratch.work.clear();
+      for(std::size_t t = 0; t < counts[i]; ++t)
+        scratch.work.push_back(axes[i].dot(search.point(parallel[i * row + t]) - search.point(i)));
+      splits[i] = Sheets::Splits(scratch.work);
+      spreads[i] = splits[i].spread_within_sheets();
       radii[i] = scratch.neighborhood.radius;
       const double radius = scratch.neighborhood.points[nearest - 1].norm();
       areas[i] = CGAL_PI * radius * radius / double(nearest);
@@ -241,8 +238,7 @@ std::vector<Signed_edge> orientation_edges(const Neighbor_search& search, const 
     std::vector<double>& work = scratch.work;
     for(std::size_t i = begin; i < end; ++i)
     {
-      parallel_offsets(i, work);
-      sheets[i] = Sheets(work, noise);
+      sheets[i] = Sheets(splits[i], noise);
       scratch.displacements.clear();
       for(std::size_t t = 0; t < counts[i]; ++t)
         if(!off_surface(parallel[i * row + t]))
@@ -293,7 +289,11 @@ std::vector<Signed_edge> orientation_edges(const Neighbor_search& search, const 
       }
     return true;
   });
+  std::size_t count = 0;
+  for(const std::vector<Signed_edge>& block : blocks)
+    count += block.size();
   std::vector<Signed_edge> edges;
+  edges.reserve(count);
   for(const std::vector<Signed_edge>& block : blocks)
     edges.insert(edges.end(), block.begin(), block.end());
   return edges;

@@ -93,14 +93,17 @@ public:
         m_entries[next[e.a]++] = { e.b, -e.weight };
         m_entries[next[e.b]++] = { e.a, -e.weight };
       }
-    for(std::size_t v = 0; v < size; ++v)
-    {
-      m_entries[next[v]] = { std::uint32_t(v), m_diagonal[v] };
-      // By column, in place and stable: the rows are short.
-      for(std::size_t t = m_first[v] + 1; t < m_first[v + 1]; ++t)
-        for(std::size_t u = t; u > m_first[v] && m_entries[u].column < m_entries[u - 1].column; --u)
-          std::swap(m_entries[u], m_entries[u - 1]);
-    }
+    CGAL::for_each<ConcurrencyTag>(m_blocks, [&](std::size_t b) {
+      for(std::size_t v = b * block_rows; v < (std::min)(size, (b + 1) * block_rows); ++v)
+      {
+        m_entries[next[v]] = { std::uint32_t(v), m_diagonal[v] };
+        // By column, in place and stable: the rows are short.
+        for(std::size_t t = m_first[v] + 1; t < m_first[v + 1]; ++t)
+          for(std::size_t u = t; u > m_first[v] && m_entries[u].column < m_entries[u - 1].column; --u)
+            std::swap(m_entries[u], m_entries[u - 1]);
+      }
+      return true;
+    });
   }
 
   Eigen::Index rows() const { return Eigen::Index(m_diagonal.size()); }
